@@ -1,0 +1,333 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "dualMesh.H"
+#include "polyMesh.H"
+#include "coupledPolyPatch.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dualMesh, 0);
+}
+
+
+// * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
+
+namespace
+{
+
+// Area vector of the median-dual sub-face of vertex a in a face, the
+// quadrilateral (a, mid(a,next), face centre, mid(prev,a)), oriented with
+// the face (right-hand rule on the face's point order)
+inline Foam::vector subFaceArea
+(
+    const Foam::point& a,
+    const Foam::point& mNext,
+    const Foam::point& fc,
+    const Foam::point& mPrev
+)
+{
+    return 0.5*(((mNext - a) ^ (fc - a)) + ((fc - a) ^ (mPrev - a)));
+}
+
+// Signed volume of the pyramid with apex cc over that sub-face, positive
+// when the face is oriented away from cc
+inline Foam::scalar subFacePyramidVolume
+(
+    const Foam::point& a,
+    const Foam::point& mNext,
+    const Foam::point& fc,
+    const Foam::point& mPrev,
+    const Foam::point& cc
+)
+{
+    const Foam::vector ra(a - cc);
+    return
+    (
+        (ra & ((mNext - cc) ^ (fc - cc)))
+      + (ra & ((fc - cc) ^ (mPrev - cc)))
+    )/6.0;
+}
+
+// A strict order of two distinct points that every processor agrees on,
+// to give shared edges one orientation while summing across processors
+inline bool lexLess(const Foam::point& p, const Foam::point& q)
+{
+    if (p.x() != q.x()) return p.x() < q.x();
+    if (p.y() != q.y()) return p.y() < q.y();
+    return p.z() < q.z();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dualMesh::calcCellContributions()
+{
+    const pointField& X = mesh_.points();
+    const vectorField& faceCentres = mesh_.faceCentres();
+    const vectorField& cellCentres = mesh_.cellCentres();
+    const faceList& faces = mesh_.faces();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    const labelListList& faceEdges = mesh_.faceEdges();
+
+    // Every face is visited once; it contributes to its owner cell (face
+    // oriented outwards) and, if internal, to its neighbour (inwards).
+    // Edge fp of a face joins f[fp] -> f[fp+1] (primitiveMesh convention).
+    forAll(faces, facei)
+    {
+        const face& f = faces[facei];
+        const labelList& fEdges = faceEdges[facei];
+        const point& fc = faceCentres[facei];
+        const label nSides = (facei < mesh_.nInternalFaces()) ? 2 : 1;
+
+        for (label side = 0; side < nSides; ++side)
+        {
+            const label celli = (side == 0) ? own[facei] : nei[facei];
+            const scalar sgn = (side == 0) ? 1.0 : -1.0;
+            const point& cc = cellCentres[celli];
+
+            forAll(f, fp)
+            {
+                const label a = f[fp];
+                const label b = f.nextLabel(fp);
+                const label z = f.prevLabel(fp);
+                const point mNext(0.5*(X[a] + X[b]));
+                const point mPrev(0.5*(X[z] + X[a]));
+
+                // Dual triangle (midpoint, face centre, cell centre) of edge
+                // a-b in this cell; with the face oriented out of the cell
+                // this orientation points from a to b
+                const vector S(sgn*0.5*((cc - mNext) ^ (fc - mNext)));
+                const label e = fEdges[fp];
+                if (edgeStart_[e] == a)
+                {
+                    edgeC_[e] += S;
+                }
+                else
+                {
+                    edgeC_[e] -= S;
+                }
+
+                volume_[a] +=
+                    sgn*subFacePyramidVolume(X[a], mNext, fc, mPrev, cc);
+            }
+        }
+    }
+}
+
+
+void Foam::dualMesh::calcBoundarySubFaces()
+{
+    const pointField& X = mesh_.points();
+    const vectorField& faceCentres = mesh_.faceCentres();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+
+    patchSubFaces_.setSize(patches.size());
+
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        patchSubFaces& psf = patchSubFaces_[patchi];
+
+        if (pp.coupled())
+        {
+            continue;
+        }
+
+        label n = 0;
+        forAll(pp, i)
+        {
+            n += pp[i].size();
+        }
+        psf.point.setSize(n);
+        psf.prev.setSize(n);
+        psf.next.setSize(n);
+        psf.area.setSize(n);
+        psf.nbrWeight.setSize(n);
+
+        n = 0;
+        forAll(pp, i)
+        {
+            const face& f = pp[i];
+            const point& fc = faceCentres[pp.start() + i];
+
+            forAll(f, fp)
+            {
+                const label a = f[fp];
+                const label b = f.nextLabel(fp);
+                const label z = f.prevLabel(fp);
+
+                psf.point[n] = a;
+                psf.prev[n] = z;
+                psf.next[n] = b;
+                psf.nbrWeight[n] = (f.size() == 3) ? 0.125 : 0.0;
+                psf.area[n] =
+                    subFaceArea
+                    (
+                        X[a], 0.5*(X[a] + X[b]), fc, 0.5*(X[z] + X[a])
+                    );
+                ++n;
+            }
+        }
+    }
+}
+
+
+void Foam::dualMesh::synchronise()
+{
+    pointWeight_ = 1.0;
+    edgeWeight_ = 1.0;
+
+    if (Pstream::parRun())
+    {
+        const pointField& X = mesh_.points();
+
+        syncTools::syncPointList(mesh_, volume_, plusEqOp<scalar>(), 0.0);
+        syncTools::syncPointList(mesh_, length_, minEqOp<scalar>(), GREAT);
+        syncTools::syncPointList
+        (
+            mesh_, pointWeight_, plusEqOp<scalar>(), 0.0
+        );
+
+        // Shared edges may be oriented differently on each processor:
+        // sum them in a common (lexicographic) orientation
+        forAll(edgeC_, e)
+        {
+            if (!lexLess(X[edgeStart_[e]], X[edgeEnd_[e]]))
+            {
+                edgeC_[e] = -edgeC_[e];
+            }
+        }
+        syncTools::syncEdgeList
+        (
+            mesh_, edgeC_, plusEqOp<vector>(), vector(Zero)
+        );
+        forAll(edgeC_, e)
+        {
+            if (!lexLess(X[edgeStart_[e]], X[edgeEnd_[e]]))
+            {
+                edgeC_[e] = -edgeC_[e];
+            }
+        }
+        syncTools::syncEdgeList(mesh_, edgeWeight_, plusEqOp<scalar>(), 0.0);
+
+        pointWeight_ = 1.0/pointWeight_;
+        edgeWeight_ = 1.0/edgeWeight_;
+    }
+
+    edgeNormal_.setSize(edgeC_.size());
+    edgeMagSf_.setSize(edgeC_.size());
+    forAll(edgeC_, e)
+    {
+        const scalar magC = mag(edgeC_[e]);
+        edgeNormal_[e] = edgeC_[e]/max(magC, VSMALL);
+        edgeMagSf_[e] = magC*edgeWeight_[e];
+    }
+}
+
+
+void Foam::dualMesh::calcPointEdges()
+{
+    const label nPts = volume_.size();
+
+    pointEdgeStart_.setSize(nPts + 1);
+    pointEdgeStart_ = 0;
+    forAll(edgeStart_, e)
+    {
+        ++pointEdgeStart_[edgeStart_[e] + 1];
+        ++pointEdgeStart_[edgeEnd_[e] + 1];
+    }
+    for (label i = 0; i < nPts; ++i)
+    {
+        pointEdgeStart_[i + 1] += pointEdgeStart_[i];
+    }
+
+    pointEdges_.setSize(pointEdgeStart_[nPts]);
+    labelList fill(SubList<label>(pointEdgeStart_, nPts));
+    forAll(edgeStart_, e)
+    {
+        pointEdges_[fill[edgeStart_[e]]++] = e;
+        pointEdges_[fill[edgeEnd_[e]]++] = e;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dualMesh::dualMesh(const polyMesh& mesh)
+:
+    mesh_(mesh),
+    edgeStart_(mesh.nEdges()),
+    edgeEnd_(mesh.nEdges()),
+    edgeC_(mesh.nEdges(), Zero),
+    edgeNormal_(),
+    edgeMagSf_(),
+    edgeWeight_(mesh.nEdges(), 1.0),
+    volume_(mesh.nPoints(), 0.0),
+    length_(mesh.nPoints(), GREAT),
+    pointWeight_(mesh.nPoints(), 1.0),
+    patchSubFaces_(),
+    pointEdgeStart_(),
+    pointEdges_()
+{
+    const edgeList& edges = mesh.edges();
+    const pointField& X = mesh.points();
+
+    forAll(edges, e)
+    {
+        edgeStart_[e] = edges[e].start();
+        edgeEnd_[e] = edges[e].end();
+
+        const scalar l = mag(X[edgeEnd_[e]] - X[edgeStart_[e]]);
+        length_[edgeStart_[e]] = min(length_[edgeStart_[e]], l);
+        length_[edgeEnd_[e]] = min(length_[edgeEnd_[e]], l);
+    }
+
+    calcCellContributions();
+    calcBoundarySubFaces();
+    synchronise();
+    calcPointEdges();
+
+    forAll(volume_, i)
+    {
+        if (volume_[i] <= 0)
+        {
+            FatalErrorInFunction
+                << "Control volume of point " << i << " at "
+                << X[i] << " is " << volume_[i] << " (not positive)."
+                << nl << "    The mesh " << mesh.objectPath()
+                << " has inverted or badly distorted cells: run checkMesh."
+                << exit(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::dualMesh::minLength() const
+{
+    return gMin(length_);
+}
+
+
+Foam::scalar Foam::dualMesh::sumPoints(const UList<scalar>& f) const
+{
+    scalar s = 0;
+    forAll(f, i)
+    {
+        s += pointWeight_[i]*f[i];
+    }
+    reduce(s, sumOp<scalar>());
+    return s;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,309 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+-------------------------------------------------------------------------------
+Application
+    Test-dualMesh
+
+Description
+    Checks the median dual of the case's mesh against its invariants:
+      - closure  sum_j C_ij + sum_g C_g = 0 at every point;
+      - the control volumes sum to the mesh volume (tets: V/4 per vertex);
+      - C_ij = -C_ji through the point-edge connectivity;
+      - the Green-Gauss gradient of a linear field (exact on tets and
+        parallelepipeds, with the boundary weights of dualMesh::patchSubFaces;
+        -linearExact asserts it; on prisms only interior points are exact).
+    With -dump, writes per-point volumes and per-edge vectors with global
+    (serial) point labels, so a parallel run can be compared with a serial
+    one (tests/dualMesh/compareDumps).  Exits non-zero if a check fails.
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "polyMesh.H"
+#include "cellModel.H"
+#include "labelIOList.H"
+#include "OFstream.H"
+#include "IOmanip.H"
+#include "dualMesh.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+label nFailed = 0;
+
+void check(const bool ok, const word& name, const scalar value, const scalar tol)
+{
+    Info<< "    " << (ok ? "PASS " : "FAIL ") << name << ": " << value
+        << " (tolerance " << tol << ")" << endl;
+    if (!ok)
+    {
+        ++nFailed;
+    }
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote("Check the median dual mesh against its invariants");
+    argList::addOption("tol", "scalar", "relative tolerance (default 1e-12)");
+    argList::addBoolOption
+    (
+        "linearExact",
+        "require the Green-Gauss gradient to be exact for a linear field"
+    );
+    argList::addOption
+    (
+        "dump",
+        "file",
+        "write volumes and edge vectors with serial point labels to file"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createPolyMesh.H"
+
+    const scalar tol = args.getOrDefault<scalar>("tol", 1e-12);
+
+    const dualMesh dual(mesh);
+
+    const labelList& es = dual.edgeStart();
+    const labelList& ee = dual.edgeEnd();
+    const vectorField& C = dual.edgeC();
+    const scalarField& w = dual.edgeWeights();
+    const scalarField& vol = dual.volumes();
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const label nPts = mesh.nPoints();
+
+    Info<< "Dual mesh: " << returnReduce(mesh.nCells(), sumOp<label>())
+        << " cells, " << returnReduce(dual.nEdges(), sumOp<label>())
+        << " edges (processor copies counted), min length "
+        << dual.minLength() << nl << endl;
+
+    // 1. Closure ------------------------------------------------------------
+    {
+        vectorField residual(nPts, Zero);
+        scalarField scale(nPts, 0.0);
+        forAll(es, e)
+        {
+            residual[es[e]] += w[e]*C[e];
+            residual[ee[e]] -= w[e]*C[e];
+            scale[es[e]] += w[e]*mag(C[e]);
+            scale[ee[e]] += w[e]*mag(C[e]);
+        }
+        forAll(patches, patchi)
+        {
+            const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
+            forAll(sf.point, k)
+            {
+                residual[sf.point[k]] += sf.area[k];
+                scale[sf.point[k]] += mag(sf.area[k]);
+            }
+        }
+        dual.syncPointResidual(residual);
+        dual.syncPointResidual(scale);
+
+        scalar maxRel = 0;
+        forAll(residual, i)
+        {
+            maxRel = max(maxRel, mag(residual[i])/scale[i]);
+        }
+        reduce(maxRel, maxOp<scalar>());
+        check(maxRel < tol, "closure |sum C|/sum|C|", maxRel, tol);
+    }
+
+    // 2. Volumes --------------------------------------------------------------
+    {
+        const scalar dualV = dual.sumPoints(vol);
+        const scalar meshV = gSum(mesh.cellVolumes());
+        const scalar rel = mag(dualV - meshV)/meshV;
+        check(rel < tol, "volume sum vs mesh volume", rel, tol);
+
+        // Tetrahedra: each vertex gets exactly a quarter of every cell
+        const cellModel& tet = cellModel::ref(cellModel::TET);
+        const cellShapeList& shapes = mesh.cellShapes();
+        bool allTets = true;
+        forAll(shapes, celli)
+        {
+            allTets = allTets && (shapes[celli].model() == tet);
+        }
+        reduce(allTets, andOp<bool>());
+
+        if (allTets)
+        {
+            scalarField quarter(nPts, 0.0);
+            forAll(shapes, celli)
+            {
+                for (const label pointi : shapes[celli])
+                {
+                    quarter[pointi] += 0.25*mesh.cellVolumes()[celli];
+                }
+            }
+            dual.syncPointResidual(quarter);
+            scalar maxRel = 0;
+            forAll(vol, i)
+            {
+                maxRel = max(maxRel, mag(vol[i] - quarter[i])/quarter[i]);
+            }
+            reduce(maxRel, maxOp<scalar>());
+            check(maxRel < tol, "tet vertex volume = sum V/4", maxRel, tol);
+        }
+    }
+
+    // 3. Antisymmetry through the point-edge connectivity -------------------
+    {
+        const labelList& start = dual.pointEdgeStart();
+        const labelList& pe = dual.pointEdges();
+        scalar maxRel = 0;
+        labelList count(dual.nEdges(), 0);
+        for (label i = 0; i < nPts; ++i)
+        {
+            for (label k = start[i]; k < start[i+1]; ++k)
+            {
+                const label e = pe[k];
+                const label j = dual.otherPoint(e, i);
+                ++count[e];
+                maxRel = max
+                (
+                    maxRel,
+                    mag(dual.C(e, i) + dual.C(e, j))/mag(C[e])
+                );
+                if (i != es[e] && i != ee[e])
+                {
+                    maxRel = GREAT;
+                }
+            }
+        }
+        forAll(count, e)
+        {
+            if (count[e] != 2)
+            {
+                maxRel = GREAT;
+            }
+        }
+        reduce(maxRel, maxOp<scalar>());
+        check(maxRel < tol, "C_ij + C_ji (point-edge lists)", maxRel, tol);
+    }
+
+    // 4. Green-Gauss gradient of a linear field ----------------------------
+    {
+        const vector b(2, -3, 0.5);
+        const pointField& X = mesh.points();
+        scalarField f(nPts);
+        forAll(f, i)
+        {
+            f[i] = 1 + (b & X[i]);
+        }
+
+        vectorField G(nPts, Zero);
+        forAll(es, e)
+        {
+            const vector flux(0.5*w[e]*(f[es[e]] + f[ee[e]])*C[e]);
+            G[es[e]] += flux;
+            G[ee[e]] -= flux;
+        }
+        boolList onBoundary(nPts, false);
+        forAll(patches, patchi)
+        {
+            const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
+            forAll(sf.point, k)
+            {
+                const scalar fi = f[sf.point[k]];
+                const scalar fb =
+                    fi + sf.nbrWeight[k]*(f[sf.prev[k]] + f[sf.next[k]] - 2*fi);
+                G[sf.point[k]] += fb*sf.area[k];
+                onBoundary[sf.point[k]] = true;
+            }
+        }
+        dual.syncPointResidual(G);
+        syncTools::syncPointList(mesh, onBoundary, orEqOp<bool>(), false);
+
+        scalar errInternal = 0, errBoundary = 0;
+        forAll(G, i)
+        {
+            const scalar err = mag(G[i]/vol[i] - b)/mag(b);
+            if (onBoundary[i])
+            {
+                errBoundary = max(errBoundary, err);
+            }
+            else
+            {
+                errInternal = max(errInternal, err);
+            }
+        }
+        reduce(errInternal, maxOp<scalar>());
+        reduce(errBoundary, maxOp<scalar>());
+
+        const scalar gtol = 1e3*tol;
+        if (args.found("linearExact"))
+        {
+            check(errInternal < gtol, "linear gradient, interior", errInternal, gtol);
+            check(errBoundary < gtol, "linear gradient, boundary", errBoundary, gtol);
+        }
+        else
+        {
+            Info<< "    info linear gradient error: interior " << errInternal
+                << ", boundary " << errBoundary << endl;
+        }
+    }
+
+    // 5. Dump with serial point labels ---------------------------------------
+    if (args.found("dump"))
+    {
+        labelList global(identity(nPts));
+        if (Pstream::parRun())
+        {
+            global = labelIOList
+            (
+                IOobject
+                (
+                    "pointProcAddressing",
+                    mesh.facesInstance(),
+                    polyMesh::meshSubDir,
+                    mesh,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE,
+                    false
+                )
+            );
+        }
+
+        fileName dumpName(args.get<fileName>("dump"));
+        if (Pstream::parRun())
+        {
+            dumpName += "." + Foam::name(Pstream::myProcNo());
+        }
+        OFstream os(dumpName);
+        os.precision(17);
+        forAll(vol, i)
+        {
+            os  << "p " << global[i] << ' ' << vol[i] << ' '
+                << dual.pointWeights()[i] << nl;
+        }
+        forAll(es, e)
+        {
+            // Orient from the lower to the higher serial label
+            const label gs = global[es[e]];
+            const label ge = global[ee[e]];
+            const vector c((gs < ge) ? C[e] : -C[e]);
+            os  << "e " << min(gs, ge) << ' ' << max(gs, ge) << ' '
+                << c.x() << ' ' << c.y() << ' ' << c.z() << ' ' << w[e] << nl;
+        }
+    }
+
+    reduce(nFailed, sumOp<label>());
+    Info<< nl << (nFailed ? "FAILED " : "All checks passed ")
+        << "(" << nFailed << " failed)" << nl << "End" << nl << endl;
+
+    return nFailed ? 1 : 0;
+}
+
+
+// ************************************************************************* //

@@ -7,19 +7,24 @@ Application
 
 Description
     Explicit multi-body solver for large-strain solid contact dynamics on the
-    median dual of each body's mesh.  Bodies are the regions listed under
-    'solid' in constant/regionProperties, or the single mesh in
-    constant/polyMesh when there is no such file.
+    median dual of each body's mesh (Total Lagrangian {p, F, H, J} system,
+    upwind Riemann fluxes, TVD Runge-Kutta 2).
 
-    This version reads the bodies and builds their dual meshes.
+    Bodies are the regions listed under 'solid' in constant/regionProperties,
+    or the single mesh in constant/polyMesh when there is no such file.  Each
+    body is described by constant/<body>/solidProperties (see solidBody.H).
+    system/controlDict: endTime, writeControl (adjustableRunTime), and
+        cfl     0.3;        // time step = cfl h_min / U_max
 
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
 #include "Time.H"
-#include "polyMesh.H"
 #include "regionProperties.H"
-#include "dualMesh.H"
+#include "clockTime.H"
+#include "solidBody.H"
+#include "bodyMonitor.H"
+#include "tvdRungeKutta2.H"
 
 using namespace Foam;
 
@@ -33,37 +38,68 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     #include "createTime.H"
+    #include "createBodies.H"
 
-    wordList bodies(1, polyMesh::defaultRegion);
-    if (isFile(runTime.constant()/"regionProperties"))
-    {
-        bodies = regionProperties(runTime)["solid"];
-    }
+    const clockTime wallClock;
+    const label nPointStagesPerStep = tvdRungeKutta2::nStages*nPoints;
+    label nSteps = 0;
+    scalar nextReport = 0;
+    const scalar endTime = runTime.endTime().value();
+    const scalar startTime = runTime.value();
 
-    forAll(bodies, bodyi)
+    Info<< "Starting time loop" << nl << endl;
+
+    while (runTime.run())
     {
-        Info<< "Body " << bodies[bodyi] << nl;
-        polyMesh mesh
+        const scalar dt = min
         (
-            IOobject
-            (
-                bodies[bodyi],
-                runTime.timeName(),
-                runTime,
-                IOobject::MUST_READ
-            )
+            tvdRungeKutta2::stableDeltaT(bodies, cfl),
+            endTime - runTime.value()
         );
-        const dualMesh dual(mesh);
+        runTime.setDeltaT(dt);
+        const scalar t0 = runTime.value();
+        ++runTime;
 
-        Info<< "    points " << returnReduce(mesh.nPoints(), sumOp<label>())
-            << ", cells " << returnReduce(mesh.nCells(), sumOp<label>())
-            << ", edges " << returnReduce(dual.nEdges(), sumOp<label>())
-            << nl
-            << "    volume " << dual.sumPoints(dual.volumes())
-            << ", control volumes " << gMin(dual.volumes()) << " .. "
-            << gMax(dual.volumes()) << nl
-            << "    shortest edge " << dual.minLength() << nl << endl;
+        tvdRungeKutta2::step(bodies, t0, runTime.deltaTValue());
+        ++nSteps;
+
+        #include "checkState.H"
+
+        forAll(monitors, b)
+        {
+            monitors[b].write(runTime.value());
+        }
+
+        if (runTime.writeTime())
+        {
+            for (const solidBody& b : bodies)
+            {
+                b.write();
+            }
+        }
+
+        const scalar progress =
+            (runTime.value() - startTime)/max(endTime - startTime, VSMALL);
+        if (progress >= nextReport || !runTime.run())
+        {
+            const scalar wall = wallClock.elapsedTime();
+            Info<< "t = " << runTime.timeName() << "  step " << nSteps
+                << "  dt " << runTime.deltaTValue()
+                << "  " << label(100*progress + 0.5) << "%"
+                << "  wall " << wall << " s  left "
+                << (progress > 0 ? wall*(1 - progress)/progress : 0)
+                << " s" << endl;
+            nextReport += 0.05;
+        }
     }
+
+    const scalar wall = max(wallClock.elapsedTime(), scalar(1e-9));
+    Info<< nl << "Finished " << nSteps << " steps in " << wall << " s wall"
+        << nl << "Throughput: "
+        << scalar(nSteps)*nPointStagesPerStep/wall/Pstream::nProcs()
+        << " point-stage updates per second per core ("
+        << nPoints << " points, " << Pstream::nProcs() << " cores)"
+        << nl << endl;
 
     Info<< "End\n" << endl;
     return 0;

@@ -1,0 +1,149 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "rigidWall.H"
+#include "acousticFormulas.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace solidBoundaryConditions
+{
+    defineTypeNameAndDebug(rigidWall, 0);
+    addToRunTimeSelectionTable(solidBoundaryCondition, rigidWall, dictionary);
+}
+}
+
+
+Foam::solidBoundaryConditions::rigidWall::rigidWall
+(
+    const dualMesh& dual,
+    const label patchi,
+    const dictionary& dict
+)
+:
+    solidBoundaryCondition(dual, patchi, dict),
+    point_(dict.get<point>("point")),
+    normal_(dict.get<vector>("normal")),
+    velocity_(dict.getOrDefault<vector>("velocity", Zero)),
+    friction_(frictionModel::frictionless),
+    k_(0)
+{
+    if (mag(normal_) < SMALL)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'normal' of patch '" << patchName()
+            << "' must be a non-zero vector" << exit(FatalIOError);
+    }
+    normal_ /= mag(normal_);
+
+    if (dict.found("friction"))
+    {
+        ITstream& is = dict.lookup("friction");
+        const token tok(is);
+        if (tok.isWord() && tok.wordToken() == "frictionless")
+        {
+            friction_ = frictionModel::frictionless;
+        }
+        else if (tok.isWord() && tok.wordToken() == "stick")
+        {
+            friction_ = frictionModel::stick;
+        }
+        else if (tok.isNumber() && tok.number() >= 0)
+        {
+            k_ = tok.number();
+            friction_ =
+                (k_ > 0) ? frictionModel::coulomb : frictionModel::frictionless;
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'friction' of patch '" << patchName()
+                << "' is " << tok << "; allowed: frictionless, stick, or a"
+                << " Coulomb coefficient >= 0" << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::solidBoundaryConditions::rigidWall::contactState
+(
+    const vector& n,
+    const point& x,
+    const vector& v,
+    const vector& tL,
+    const scalar Zp,
+    const scalar Zs,
+    const scalar t,
+    vector& tC,
+    vector& vC
+) const
+{
+    const point wallPoint(point_ + t*velocity_);
+    const scalar gap = (x - wallPoint) & normal_;
+
+    // Contact normal: out of the body, into the wall
+    const vector nc(-normal_);
+    const scalar vWallN = velocity_ & nc;
+    const scalar tnTrial = (tL & nc) + Zp*(vWallN - (v & nc));
+
+    if (gap > 0 || tnTrial >= 0)
+    {
+        // Open gap or tension: traction-free
+        tC = Zero;
+        vC = acoustic::tractionVelocity(tL, v, tC, n, Zp, Zs);
+        return;
+    }
+
+    switch (friction_)
+    {
+        case frictionModel::frictionless:
+        {
+            acoustic::mixedState(tL, v, vWallN, Zero, nc, Zp, Zs, tC, vC);
+            break;
+        }
+        case frictionModel::stick:
+        {
+            vC = velocity_;
+            tC = acoustic::velocityTraction(tL, v, vC, nc, Zp, Zs);
+            break;
+        }
+        case frictionModel::coulomb:
+        {
+            // Trial stick; slip when the tangential traction exceeds k |t_n|
+            tC = acoustic::velocityTraction(tL, v, velocity_, nc, Zp, Zs);
+            const vector tt(acoustic::tangential(tC, nc));
+            const scalar limit = -k_*tnTrial;
+            if (mag(tt) <= limit)
+            {
+                vC = velocity_;
+            }
+            else
+            {
+                acoustic::mixedState
+                (
+                    tL, v, vWallN, (limit/mag(tt))*tt, nc, Zp, Zs, tC, vC
+                );
+            }
+            break;
+        }
+    }
+}
+
+
+void Foam::solidBoundaryConditions::rigidWall::describe(Ostream& os) const
+{
+    os  << "rigid wall at " << point_ << ", normal " << normal_
+        << ", velocity " << velocity_ << ", friction ";
+    switch (friction_)
+    {
+        case frictionModel::frictionless: os << "frictionless"; break;
+        case frictionModel::stick: os << "stick"; break;
+        case frictionModel::coulomb: os << "Coulomb k = " << k_; break;
+    }
+}
+
+
+// ************************************************************************* //

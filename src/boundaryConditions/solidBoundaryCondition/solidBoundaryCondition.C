@@ -1,0 +1,111 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "solidBoundaryCondition.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(solidBoundaryCondition, 0);
+    defineRunTimeSelectionTable(solidBoundaryCondition, dictionary);
+}
+
+
+Foam::solidBoundaryCondition::solidBoundaryCondition
+(
+    const dualMesh& dual,
+    const label patchi,
+    const dictionary& dict
+)
+:
+    dual_(dual),
+    patchi_(patchi),
+    dict_(dict)
+{}
+
+
+Foam::autoPtr<Foam::solidBoundaryCondition> Foam::solidBoundaryCondition::New
+(
+    const dualMesh& dual,
+    const label patchi,
+    const dictionary& dict
+)
+{
+    const word bcType(dict.get<word>("type"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(bcType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown boundary condition type '" << bcType
+            << "' for patch '" << dual.mesh().boundaryMesh()[patchi].name()
+            << "'" << nl << "Valid types: "
+            << flatOutput(dictionaryConstructorTablePtr_->sortedToc())
+            << exit(FatalIOError);
+    }
+
+    return autoPtr<solidBoundaryCondition>(cstrIter()(dual, patchi, dict));
+}
+
+
+Foam::scalar Foam::solidBoundaryCondition::addFluxes
+(
+    const UList<point>& x,
+    const UList<vector>& v,
+    const UList<tensor>& P,
+    const UList<tensor>& H,
+    const scalar Zp,
+    const scalar Zs,
+    const scalar t,
+    UList<vector>& Rp,
+    UList<tensor>& D
+) const
+{
+    const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
+    scalar power = 0;
+
+    // Contact state of point k seen through the sub-face normal N
+    auto state = [&](const label k, const vector& N, vector& tC, vector& vC)
+    {
+        vector n(H[k] & N);
+        n /= mag(n);
+        contactState(n, x[k], v[k], P[k] & N, Zp, Zs, t, tC, vC);
+    };
+
+    forAll(sf.point, s)
+    {
+        const label i = sf.point[s];
+        const scalar magA = mag(sf.area[s]);
+        const vector N(sf.area[s]/magA);
+
+        vector tC, vC;
+        state(i, N, tC, vC);
+
+        const scalar w = sf.nbrWeight[s];
+        if (w > 0)
+        {
+            vector tP, vP, tN, vN;
+            state(sf.prev[s], N, tP, vP);
+            state(sf.next[s], N, tN, vN);
+            tC = (1 - 2*w)*tC + w*(tP + tN);
+            vC = (1 - 2*w)*vC + w*(vP + vN);
+        }
+
+        Rp[i] += magA*tC;
+        D[i] += vC*sf.area[s];
+        power += magA*(tC & vC);
+    }
+
+    return power;
+}
+
+
+void Foam::solidBoundaryCondition::describe(Ostream& os) const
+{
+    os  << dict_.get<word>("type");
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,54 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "symmetry.H"
+#include "acousticFormulas.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace solidBoundaryConditions
+{
+    defineTypeNameAndDebug(symmetry, 0);
+    addToRunTimeSelectionTable(solidBoundaryCondition, symmetry, dictionary);
+}
+}
+
+
+Foam::solidBoundaryConditions::symmetry::symmetry
+(
+    const dualMesh& dual,
+    const label patchi,
+    const dictionary& dict
+)
+:
+    solidBoundaryCondition(dual, patchi, dict)
+{}
+
+
+void Foam::solidBoundaryConditions::symmetry::contactState
+(
+    const vector& n,
+    const point& x,
+    const vector& v,
+    const vector& tL,
+    const scalar Zp,
+    const scalar Zs,
+    const scalar t,
+    vector& tC,
+    vector& vC
+) const
+{
+    acoustic::mixedState(tL, v, 0, Zero, n, Zp, Zs, tC, vC);
+}
+
+
+void Foam::solidBoundaryConditions::symmetry::describe(Ostream& os) const
+{
+    os  << "symmetry plane";
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,65 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "traction.H"
+#include "acousticFormulas.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace solidBoundaryConditions
+{
+    defineTypeNameAndDebug(traction, 0);
+    addToRunTimeSelectionTable(solidBoundaryCondition, traction, dictionary);
+}
+}
+
+
+Foam::solidBoundaryConditions::traction::traction
+(
+    const dualMesh& dual,
+    const label patchi,
+    const dictionary& dict
+)
+:
+    solidBoundaryCondition(dual, patchi, dict)
+,
+    traction_
+    (
+        dict.found("traction")
+      ? Function1<vector>::New("traction", dict)
+      : autoPtr<Function1<vector>>
+        (
+            new Function1Types::Constant<vector>("traction", Zero)
+        )
+    )
+{}
+
+
+void Foam::solidBoundaryConditions::traction::contactState
+(
+    const vector& n,
+    const point& x,
+    const vector& v,
+    const vector& tL,
+    const scalar Zp,
+    const scalar Zs,
+    const scalar t,
+    vector& tC,
+    vector& vC
+) const
+{
+    tC = traction_->value(t);
+    vC = acoustic::tractionVelocity(tL, v, tC, n, Zp, Zs);
+}
+
+
+void Foam::solidBoundaryConditions::traction::describe(Ostream& os) const
+{
+    os  << "traction " << traction_->value(0) << " (at t = 0)";
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,57 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "velocity.H"
+#include "acousticFormulas.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace solidBoundaryConditions
+{
+    defineTypeNameAndDebug(velocity, 0);
+    addToRunTimeSelectionTable(solidBoundaryCondition, velocity, dictionary);
+}
+}
+
+
+Foam::solidBoundaryConditions::velocity::velocity
+(
+    const dualMesh& dual,
+    const label patchi,
+    const dictionary& dict
+)
+:
+    solidBoundaryCondition(dual, patchi, dict)
+,
+    velocity_(Function1<vector>::New("velocity", dict))
+{}
+
+
+void Foam::solidBoundaryConditions::velocity::contactState
+(
+    const vector& n,
+    const point& x,
+    const vector& v,
+    const vector& tL,
+    const scalar Zp,
+    const scalar Zs,
+    const scalar t,
+    vector& tC,
+    vector& vC
+) const
+{
+    vC = velocity_->value(t);
+    tC = acoustic::velocityTraction(tL, v, vC, n, Zp, Zs);
+}
+
+
+void Foam::solidBoundaryConditions::velocity::describe(Ostream& os) const
+{
+    os  << "velocity " << velocity_->value(0) << " (at t = 0)";
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,83 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "mooneyRivlin.H"
+#include "tensorCross.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace materialModels
+{
+    defineTypeNameAndDebug(mooneyRivlin, 0);
+    addToRunTimeSelectionTable(materialModel, mooneyRivlin, dictionary);
+}
+}
+
+
+Foam::materialModels::mooneyRivlin::mooneyRivlin(const dictionary& dict, const label nPoints)
+:
+    materialModel(dict, nPoints)
+,
+    zeta_(0),
+    xi_(readPositive(dict, "xi", true))
+{
+    if (3*sqrt(3.0)*xi_ > mu_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'xi' = " << xi_ << " must be <= mu/(3 sqrt3) = "
+            << mu_/(3*sqrt(3.0)) << exit(FatalIOError);
+    }
+    zeta_ = 0.5*(mu_ - 3*sqrt(3.0)*xi_);
+}
+
+
+void Foam::materialModels::mooneyRivlin::stress
+(
+    const UList<tensor>& F,
+    const UList<tensor>& H,
+    const UList<scalar>& J,
+    UList<tensor>& P,
+    UList<scalar>& SigmaJ
+) const
+{
+    forAll(F, i)
+    {
+        const scalar j23 = pow(J[i], -2.0/3.0);
+        const scalar FF = F[i] && F[i];
+        const scalar HH = H[i] && H[i];
+        const scalar J2 = J[i]*J[i];
+        const scalar sJ =
+            -(2.0/3.0)*zeta_*j23*FF/J[i]
+          - 2*xi_*HH*sqrt(HH)/(J2*J[i])
+          + volumetricSigmaJ(J[i]);
+        const tensor SigmaH((3*xi_*sqrt(HH)/J2)*H[i]);
+        P[i] = 2*zeta_*j23*F[i] + tensorCross(SigmaH, F[i]) + sJ*H[i];
+        SigmaJ[i] = sJ;
+    }
+}
+
+
+void Foam::materialModels::mooneyRivlin::energy
+(
+    const UList<tensor>& F,
+    const UList<tensor>& H,
+    const UList<scalar>& J,
+    UList<scalar>& W
+) const
+{
+    forAll(F, i)
+    {
+        const scalar HH = H[i] && H[i];
+        W[i] =
+            zeta_*pow(J[i], -2.0/3.0)*(F[i] && F[i])
+          + xi_*HH*sqrt(HH)/sqr(J[i])
+          - 3*(zeta_ + sqrt(3.0)*xi_)
+          + volumetricEnergy(J[i]);
+    }
+}
+
+
+// ************************************************************************* //

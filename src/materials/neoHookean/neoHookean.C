@@ -1,0 +1,63 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "neoHookean.H"
+#include "tensorCross.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace materialModels
+{
+    defineTypeNameAndDebug(neoHookean, 0);
+    addToRunTimeSelectionTable(materialModel, neoHookean, dictionary);
+}
+}
+
+
+Foam::materialModels::neoHookean::neoHookean(const dictionary& dict, const label nPoints)
+:
+    materialModel(dict, nPoints)
+{}
+
+
+void Foam::materialModels::neoHookean::stress
+(
+    const UList<tensor>& F,
+    const UList<tensor>& H,
+    const UList<scalar>& J,
+    UList<tensor>& P,
+    UList<scalar>& SigmaJ
+) const
+{
+    forAll(F, i)
+    {
+        const scalar j23 = pow(J[i], -2.0/3.0);
+        const scalar FF = F[i] && F[i];
+        const scalar sJ = -(mu_/3.0)*j23*FF/J[i] + volumetricSigmaJ(J[i]);
+        P[i] = mu_*j23*F[i] + sJ*H[i];
+        SigmaJ[i] = sJ;
+    }
+}
+
+
+void Foam::materialModels::neoHookean::energy
+(
+    const UList<tensor>& F,
+    const UList<tensor>& H,
+    const UList<scalar>& J,
+    UList<scalar>& W
+) const
+{
+    forAll(F, i)
+    {
+        W[i] =
+            0.5*mu_*(pow(J[i], -2.0/3.0)*(F[i] && F[i]) - 3)
+          + volumetricEnergy(J[i]);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,144 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "bodyMonitor.H"
+#include "Time.H"
+#include "IOmanip.H"
+
+Foam::bodyMonitor::bodyMonitor(const solidBody& body)
+:
+    body_(body),
+    E0_(body.kineticEnergy() + body.strainEnergy()),
+    probePoints_(),
+    probeLocations_()
+{
+    if (body.dict().found("probes"))
+    {
+        probeLocations_ =
+            body.dict().subDict("probes").get<pointField>("locations");
+    }
+    probePoints_.setSize(probeLocations_.size());
+    forAll(probeLocations_, k)
+    {
+        probePoints_[k] = body.findPoint(probeLocations_[k]);
+    }
+
+    if (Pstream::master())
+    {
+        const Time& runTime = body.mesh().time();
+        const fileName dir
+        (
+            runTime.globalPath()/"postProcessing"/body.name()
+        );
+        mkDir(dir);
+        // A restart appends to the files of the earlier run
+        const bool append = runTime.startTime().value() > 0;
+        energyFile_.reset
+        (
+            new OFstream
+            (
+                dir/"energy.csv",
+                IOstream::ASCII, IOstream::currentVersion,
+                IOstream::UNCOMPRESSED, append
+            )
+        );
+        probeFile_.reset
+        (
+            new OFstream
+            (
+                dir/"probes.csv",
+                IOstream::ASCII, IOstream::currentVersion,
+                IOstream::UNCOMPRESSED, append
+            )
+        );
+        energyFile_().precision(12);
+        probeFile_().precision(12);
+        if (!append)
+        {
+            energyFile_()
+                << "t,kinetic,strain,plastic,externalWork,total,"
+                << "numericalDissipation,px,py,pz" << nl;
+            probeFile_() << "t";
+            forAll(probeLocations_, k)
+            {
+                for (const char* c : {"vx","vy","vz","ux","uy","uz",
+                     "sxx","syy","szz","sxy","syz","sxz"})
+                {
+                    probeFile_() << ',' << c << k;
+                }
+            }
+            probeFile_() << nl;
+        }
+    }
+
+    Info<< "    monitors   postProcessing/" << body.name()
+        << "/energy.csv, probes.csv (" << probeLocations_.size()
+        << " probes)" << nl;
+    forAll(probeLocations_, k)
+    {
+        point p(Zero);
+        if (probePoints_[k] >= 0)
+        {
+            p = body.mesh().points()[probePoints_[k]];
+        }
+        reduce(p, sumOp<vector>());
+        Info<< "    probe " << k << " at " << probeLocations_[k]
+            << ": point at " << p << nl;
+    }
+}
+
+
+Foam::scalar Foam::bodyMonitor::write(const scalar t)
+{
+    const scalar KE = body_.kineticEnergy();
+    const scalar SE = body_.strainEnergy();
+    const scalar Dp = 0;
+    const scalar Wext = body_.externalWork();
+    const scalar E = KE + SE;
+    const scalar Dnum = E0_ + Wext - E - Dp;
+    const vector pm(body_.linearMomentum());
+
+    List<scalar> values(12*probePoints_.size(), 0.0);
+    forAll(probePoints_, k)
+    {
+        const label i = probePoints_[k];
+        if (i >= 0)
+        {
+            const vector& v = body_.v()[i];
+            const vector& u = body_.u()[i];
+            const symmTensor s(body_.cauchyStress(i));
+            const scalar row[12] =
+                {v.x(), v.y(), v.z(), u.x(), u.y(), u.z(),
+                 s.xx(), s.yy(), s.zz(), s.xy(), s.yz(), s.xz()};
+            for (label c = 0; c < 12; ++c)
+            {
+                values[12*k + c] = row[c];
+            }
+        }
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(values, plusEqOp<scalar>());
+    }
+
+    if (Pstream::master())
+    {
+        energyFile_()
+            << t << ',' << KE << ',' << SE << ',' << Dp << ',' << Wext
+            << ',' << E << ',' << Dnum << ',' << pm.x() << ',' << pm.y()
+            << ',' << pm.z() << nl;
+        probeFile_() << t;
+        forAll(values, c)
+        {
+            probeFile_() << ',' << values[c];
+        }
+        probeFile_() << nl;
+    }
+
+    return Dnum;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,124 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "barthJespersen.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace limiters
+{
+    defineTypeNameAndDebug(barthJespersen, 0);
+    addToRunTimeSelectionTable(limiter, barthJespersen, dictionary);
+}
+}
+
+
+namespace
+{
+
+// Limit of one end: extrapolated increment d towards the edge midpoint.
+// Increments at round-off level relative to the local values are not
+// limited: in flat regions (fmax - fi)/d would be noise over noise, and
+// the result would depend on the order of summation (serial != parallel).
+inline Foam::scalar bjRatio
+(
+    const Foam::scalar d,
+    const Foam::scalar fi,
+    const Foam::scalar fmin,
+    const Foam::scalar fmax
+)
+{
+    const Foam::scalar noise =
+        1e-12*(Foam::mag(fmax) + Foam::mag(fmin)) + Foam::VSMALL;
+    if (Foam::mag(d) <= noise)
+    {
+        return 1.0;
+    }
+    if (d > 0)
+    {
+        return Foam::min(1.0, (fmax - fi)/d);
+    }
+    return Foam::min(1.0, (fmin - fi)/d);
+}
+
+} // End anonymous namespace
+
+
+void Foam::limiters::barthJespersen::limit
+(
+    const dualMesh& dual,
+    const UList<fluxState>& q,
+    const UList<fluxStateGradient>& G,
+    List<fluxState>& phi
+) const
+{
+    const labelList& es = dual.edgeStart();
+    const labelList& ee = dual.edgeEnd();
+    const pointField& X = dual.mesh().points();
+    const label nPts = q.size();
+
+    // Neighbourhood extrema (the point itself included)
+    List<fluxState> qMin(q), qMax(q);
+    forAll(es, e)
+    {
+        const label i = es[e], j = ee[e];
+        for (direction c = 0; c < nFluxComponents; ++c)
+        {
+            qMin[i][c] = min(qMin[i][c], q[j][c]);
+            qMax[i][c] = max(qMax[i][c], q[j][c]);
+            qMin[j][c] = min(qMin[j][c], q[i][c]);
+            qMax[j][c] = max(qMax[j][c], q[i][c]);
+        }
+    }
+    if (Pstream::parRun())
+    {
+        fluxState big; big = GREAT;
+        fluxState small; small = -GREAT;
+        syncTools::syncPointList
+        (
+            dual.mesh(), qMin, fluxStateMinEqOp(), big
+        );
+        syncTools::syncPointList
+        (
+            dual.mesh(), qMax, fluxStateMaxEqOp(), small
+        );
+    }
+
+    for (label i = 0; i < nPts; ++i)
+    {
+        phi[i] = 1.0;
+    }
+
+    forAll(es, e)
+    {
+        const label i = es[e], j = ee[e];
+        const vector halfdX(0.5*(X[j] - X[i]));
+        for (direction c = 0; c < nFluxComponents; ++c)
+        {
+            phi[i][c] = min
+            (
+                phi[i][c],
+                bjRatio(G[i][c] & halfdX, q[i][c], qMin[i][c], qMax[i][c])
+            );
+            phi[j][c] = min
+            (
+                phi[j][c],
+                bjRatio(-(G[j][c] & halfdX), q[j][c], qMin[j][c], qMax[j][c])
+            );
+        }
+    }
+    if (Pstream::parRun())
+    {
+        fluxState one; one = 1.0;
+        syncTools::syncPointList
+        (
+            dual.mesh(), phi, fluxStateMinEqOp(), one
+        );
+    }
+}
+
+
+// ************************************************************************* //

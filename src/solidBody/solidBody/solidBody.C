@@ -1,0 +1,734 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "solidBody.H"
+#include "Time.H"
+#include "pointFields.H"
+#include "emptyPolyPatch.H"
+#include "tensorCross.H"
+#include "acousticFormulas.H"
+
+// * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+template<class Type>
+bool readPointField(const polyMesh& mesh, const word& name, List<Type>& values)
+{
+    typedef GeometricField<Type, pointPatchField, pointMesh> fieldType;
+
+    IOobject io
+    (
+        name, mesh.time().timeName(), mesh,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    if (!io.typeHeaderOk<fieldType>(true))
+    {
+        return false;
+    }
+    const fieldType fld(io, pointMesh::New(mesh));
+    if (fld.size() != values.size())
+    {
+        FatalErrorInFunction
+            << "Field " << fld.objectPath() << " has " << fld.size()
+            << " values for " << values.size() << " points"
+            << exit(FatalError);
+    }
+    values = fld.primitiveField();
+    return true;
+}
+
+
+template<class Type>
+void writePointField
+(
+    const polyMesh& mesh,
+    const word& name,
+    const UList<Type>& values,
+    const dimensionSet& dims
+)
+{
+    GeometricField<Type, pointPatchField, pointMesh> fld
+    (
+        IOobject
+        (
+            name, mesh.time().timeName(), mesh,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        pointMesh::New(mesh),
+        dimensioned<Type>(dims, Zero),
+        calculatedPointPatchField<Type>::typeName
+    );
+    fld.primitiveFieldRef() = values;
+    fld.write();
+}
+
+
+// FatalIOError for any keyword of dict not in the allowed list
+void checkKeywords(const dictionary& dict, const wordList& allowed)
+{
+    for (const entry& e : dict)
+    {
+        if (!allowed.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << e.keyword() << "'" << nl
+                << "Allowed keywords: " << flatOutput(allowed)
+                << exit(FatalIOError);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::solidBody::readScheme()
+{
+    checkKeywords
+    (
+        dict_,
+        {"material", "scheme", "initialVelocity", "bodyForce",
+         "boundaryConditions", "probes"}
+    );
+
+    const dictionary& scheme = dict_.subOrEmptyDict("scheme");
+    checkKeywords(scheme, {"secondOrder", "limiter", "JLaw", "HLaw"});
+
+    JLaw_ = scheme.getOrDefault<Switch>("JLaw", true);
+    HLaw_ = scheme.getOrDefault<Switch>("HLaw", false);
+    secondOrder_ = scheme.getOrDefault<Switch>("secondOrder", true);
+
+    if (secondOrder_)
+    {
+        limiter_ = limiter::New
+        (
+            scheme.getOrDefault<word>("limiter", "barthJespersen"),
+            scheme
+        );
+    }
+}
+
+
+void Foam::solidBody::createBoundaryConditions()
+{
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    const dictionary& bcDict = dict_.subDict("boundaryConditions");
+
+    wordList physical;
+    forAll(patches, patchi)
+    {
+        if (!patches[patchi].coupled())
+        {
+            physical.append(patches[patchi].name());
+        }
+    }
+
+    for (const entry& e : bcDict)
+    {
+        if (!e.isDict() || patches.findPatchID(e.keyword()) < 0)
+        {
+            FatalIOErrorInFunction(bcDict)
+                << "Boundary condition for '" << e.keyword()
+                << "', which is not a patch of body '" << name_ << "'" << nl
+                << "Patches: " << flatOutput(physical)
+                << exit(FatalIOError);
+        }
+    }
+
+    dictionary emptyDict;
+    emptyDict.add("type", "symmetry");
+
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        if (pp.coupled())
+        {
+            continue;
+        }
+
+        if (isA<emptyPolyPatch>(pp) && !bcDict.found(pp.name()))
+        {
+            bcs_.append
+            (
+                solidBoundaryCondition::New(dual_, patchi, emptyDict)
+            );
+        }
+        else if (bcDict.isDict(pp.name()))
+        {
+            bcs_.append
+            (
+                solidBoundaryCondition::New
+                (
+                    dual_, patchi, bcDict.subDict(pp.name())
+                )
+            );
+        }
+        else
+        {
+            FatalIOErrorInFunction(bcDict)
+                << "No boundary condition for patch '" << pp.name()
+                << "' of body '" << name_ << "'" << nl
+                << "Every patch needs one: "
+                << flatOutput(solidBoundaryCondition::
+                   dictionaryConstructorTablePtr_->sortedToc())
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::solidBody::readState()
+{
+    const label nPts = mesh_.nPoints();
+    const scalar rho = material_->rho();
+
+    lm_.setSize(nPts);
+    if (!readPointField(mesh_, "lm", lm_))
+    {
+        lm_ = rho*dict_.getOrDefault<vector>("initialVelocity", Zero);
+    }
+
+    u_.setSize(nPts, Zero);
+    readPointField(mesh_, "u", u_);
+
+    F_.setSize(nPts, tensor::I);
+    readPointField(mesh_, "F", F_);
+
+    if (HLaw_)
+    {
+        H_.setSize(nPts);
+        if (!readPointField(mesh_, "H", H_))
+        {
+            forAll(H_, i)
+            {
+                H_[i] = cofactor(F_[i]);
+            }
+        }
+    }
+    else
+    {
+        Hc_.setSize(nPts);
+    }
+
+    if (JLaw_)
+    {
+        J_.setSize(nPts);
+        if (!readPointField(mesh_, "J", J_))
+        {
+            forAll(J_, i)
+            {
+                J_[i] = det(F_[i]);
+            }
+        }
+    }
+    else
+    {
+        Jc_.setSize(nPts);
+    }
+}
+
+
+void Foam::solidBody::computeGradients()
+{
+    const labelList& es = dual_.edgeStart();
+    const labelList& ee = dual_.edgeEnd();
+    const vectorField& Ne = dual_.edgeNormals();
+    const scalarField& Ae = dual_.edgeMagSf();
+    const scalarField& V = dual_.volumes();
+
+    fluxStateGradient zero;
+    zero = vector::zero;
+    G_ = zero;
+
+    forAll(es, e)
+    {
+        const label i = es[e], j = ee[e];
+        const vector C(0.5*Ae[e]*Ne[e]);
+        const fluxState& qi = q_[i];
+        const fluxState& qj = q_[j];
+        fluxStateGradient& Gi = G_[i];
+        fluxStateGradient& Gj = G_[j];
+        for (direction c = 0; c < nFluxComponents; ++c)
+        {
+            const vector flux((qi[c] + qj[c])*C);
+            Gi[c] += flux;
+            Gj[c] -= flux;
+        }
+    }
+
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        const dualMesh::patchSubFaces& sf = dual_.subFaces(bc.patchi());
+        forAll(sf.point, s)
+        {
+            const label i = sf.point[s];
+            const scalar w = sf.nbrWeight[s];
+            const fluxState& qi = q_[i];
+            const fluxState& qp = q_[sf.prev[s]];
+            const fluxState& qn = q_[sf.next[s]];
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                G_[i][c] +=
+                    (qi[c] + w*(qp[c] + qn[c] - 2*qi[c]))*sf.area[s];
+            }
+        }
+    }
+
+    if (Pstream::parRun())
+    {
+        syncTools::syncPointList
+        (
+            mesh_, G_, componentPlusEqOp<fluxStateGradient>(), zero
+        );
+    }
+
+    forAll(G_, i)
+    {
+        const scalar invV = 1.0/V[i];
+        for (direction c = 0; c < nFluxComponents; ++c)
+        {
+            G_[i][c] *= invV;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::solidBody::solidBody(const Time& runTime, const word& region)
+:
+    runTime_(runTime),
+    name_(region),
+    mesh_
+    (
+        IOobject
+        (
+            region,
+            runTime.timeName(),
+            runTime,
+            IOobject::MUST_READ
+        )
+    ),
+    dual_(mesh_),
+    dict_
+    (
+        IOobject
+        (
+            "solidProperties",
+            runTime.constant(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    material_(),
+    JLaw_(true),
+    HLaw_(false),
+    secondOrder_(true),
+    limiter_(),
+    bcs_(),
+    bodyForce_(dict_.getOrDefault<vector>("bodyForce", Zero)),
+    Wext_(0),
+    Wext0_(0),
+    power_(0)
+{
+    readScheme();
+    material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
+    createBoundaryConditions();
+    readState();
+
+    const label nPts = mesh_.nPoints();
+    v_.setSize(nPts);
+    x_.setSize(nPts);
+    P_.setSize(nPts);
+    SigmaJ_.setSize(nPts);
+    Rp_.setSize(nPts);
+    D_.setSize(nPts);
+    if (JLaw_)
+    {
+        RJ_.setSize(nPts);
+    }
+    if (secondOrder_)
+    {
+        q_.setSize(nPts);
+        phi_.setSize(nPts);
+        G_.setSize(nPts);
+    }
+
+    updateConstitutive();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::solidBody::nGlobalPoints() const
+{
+    return label(dual_.sumPoints(scalarField(mesh_.nPoints(), 1.0)) + 0.5);
+}
+
+
+void Foam::solidBody::storeState()
+{
+    lm0_ = lm_;
+    u0_ = u_;
+    F0_ = F_;
+    if (HLaw_) H0_ = H_;
+    if (JLaw_) J0_ = J_;
+    Wext0_ = Wext_;
+}
+
+
+void Foam::solidBody::restoreState()
+{
+    lm_ = lm0_;
+    u_ = u0_;
+    F_ = F0_;
+    if (HLaw_) H_ = H0_;
+    if (JLaw_) J_ = J0_;
+    Wext_ = Wext0_;
+    updateConstitutive();
+}
+
+
+void Foam::solidBody::updateConstitutive()
+{
+    const pointField& X = mesh_.points();
+    const scalar invRho = 1.0/material_->rho();
+
+    forAll(lm_, i)
+    {
+        v_[i] = invRho*lm_[i];
+        x_[i] = X[i] + u_[i];
+    }
+    if (!HLaw_)
+    {
+        forAll(F_, i)
+        {
+            Hc_[i] = cofactor(F_[i]);
+        }
+    }
+    if (!JLaw_)
+    {
+        forAll(F_, i)
+        {
+            Jc_[i] = det(F_[i]);
+        }
+    }
+
+    material_->stress(F_, Hc(), Jc(), P_, SigmaJ_);
+}
+
+
+void Foam::solidBody::assembleResiduals(const scalar t)
+{
+    const labelList& es = dual_.edgeStart();
+    const labelList& ee = dual_.edgeEnd();
+    const vectorField& Ne = dual_.edgeNormals();
+    const scalarField& Ae = dual_.edgeMagSf();
+    const pointField& X = mesh_.points();
+    const List<tensor>& H = Hc();
+
+    const scalar Zp = material_->Zp();
+    const scalar Zs = material_->Zs();
+    const scalar Sfactor = 0.5/Zp;
+
+    Rp_ = Zero;
+    D_ = Zero;
+    if (JLaw_)
+    {
+        RJ_ = 0;
+    }
+
+    if (secondOrder_)
+    {
+        forAll(q_, i)
+        {
+            packFluxState(v_[i], P_[i], q_[i]);
+        }
+        computeGradients();
+        limiter_->limit(dual_, q_, G_, phi_);
+    }
+
+    // Interior fluxes: one pass over the edges
+    fluxState qL, qR;
+    forAll(es, e)
+    {
+        const label i = es[e], j = ee[e];
+        const vector& N = Ne[e];
+        const scalar A = Ae[e];
+
+        vector vL, vR;
+        tensor PL, PR;
+        if (secondOrder_)
+        {
+            const vector halfdX(0.5*(X[j] - X[i]));
+            const fluxState& qi = q_[i];
+            const fluxState& qj = q_[j];
+            const fluxState& phii = phi_[i];
+            const fluxState& phij = phi_[j];
+            const fluxStateGradient& Gi = G_[i];
+            const fluxStateGradient& Gj = G_[j];
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                qL[c] = qi[c] + phii[c]*(Gi[c] & halfdX);
+                qR[c] = qj[c] - phij[c]*(Gj[c] & halfdX);
+            }
+            vL = fluxVelocity(qL);
+            vR = fluxVelocity(qR);
+            PL = fluxStress(qL);
+            PR = fluxStress(qR);
+        }
+        else
+        {
+            vL = v_[i];
+            vR = v_[j];
+            PL = P_[i];
+            PR = P_[j];
+        }
+
+        // Spatial normal from the average area map
+        const vector hN(0.5*((H[i] & N) + (H[j] & N)));
+        const vector n(hN/mag(hN));
+
+        const vector tC
+        (
+            A*acoustic::stickTraction(PL & N, PR & N, vL, vR, n, Zp, Zs)
+        );
+        Rp_[i] += tC;
+        Rp_[j] -= tC;
+
+        // Un-stabilised average velocity: preserves the involutions
+        const tensor vN((0.5*A)*(vL + vR)*N);
+        D_[i] += vN;
+        D_[j] -= vN;
+
+        if (JLaw_)
+        {
+            const scalar dS =
+                Sfactor*A*(hN & hN)*(SigmaJ_[j] - SigmaJ_[i]);
+            RJ_[i] += dS;
+            RJ_[j] -= dS;
+        }
+    }
+
+    // Boundary fluxes
+    power_ = 0;
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        power_ += bc.addFluxes(x_, v_, P_, H, Zp, Zs, t, Rp_, D_);
+    }
+
+    dual_.syncPointResidual(Rp_);
+    dual_.syncPointResidual(D_);
+    if (JLaw_)
+    {
+        dual_.syncPointResidual(RJ_);
+    }
+
+    // Body force power
+    if (magSqr(bodyForce_) > 0)
+    {
+        const scalarField& V = dual_.volumes();
+        const scalarField& w = dual_.pointWeights();
+        const scalar rho = material_->rho();
+        forAll(v_, i)
+        {
+            power_ += w[i]*V[i]*rho*(bodyForce_ & v_[i]);
+        }
+    }
+    reduce(power_, sumOp<scalar>());
+}
+
+
+void Foam::solidBody::rkStage(const scalar dt, const scalar a)
+{
+    const scalarField& V = dual_.volumes();
+    const vector rhoB(material_->rho()*bodyForce_);
+    const List<tensor>& H = Hc();
+    const scalar b = 1 - a;
+
+    forAll(lm_, i)
+    {
+        const scalar invV = 1.0/V[i];
+        const tensor Drate(invV*D_[i]);
+
+        // Rates of H and J use the stage's F and H (before the update)
+        if (HLaw_)
+        {
+            H_[i] = a*H0_[i] + b*(H_[i] + dt*tensorCross(F_[i], Drate));
+        }
+        if (JLaw_)
+        {
+            J_[i] =
+                a*J0_[i] + b*(J_[i] + dt*((H[i] && Drate) + invV*RJ_[i]));
+        }
+
+        lm_[i] = a*lm0_[i] + b*(lm_[i] + dt*(invV*Rp_[i] + rhoB));
+        u_[i] = a*u0_[i] + b*(u_[i] + dt*v_[i]);
+        F_[i] = a*F0_[i] + b*(F_[i] + dt*Drate);
+    }
+
+    Wext_ = a*Wext0_ + b*(Wext_ + dt*power_);
+}
+
+
+Foam::scalar Foam::solidBody::maxWaveSpeed() const
+{
+    scalar U = material_->cp();
+    if (material_->hugoniot())
+    {
+        scalar vMax = 0;
+        forAll(v_, i)
+        {
+            vMax = max(vMax, mag(v_[i]));
+        }
+        reduce(vMax, maxOp<scalar>());
+        U += material_->hugoniotS()*vMax;
+    }
+    return U;
+}
+
+
+Foam::scalar Foam::solidBody::minJ(point& where) const
+{
+    const List<scalar>& J = Jc();
+    scalar Jmin = GREAT;
+    label imin = -1;
+    forAll(J, i)
+    {
+        if (J[i] < Jmin || J[i] != J[i])
+        {
+            Jmin = J[i];
+            imin = i;
+            if (J[i] != J[i]) break;
+        }
+    }
+    where = (imin >= 0) ? mesh_.points()[imin] : point::max;
+    scalar globalMin = returnReduce(Jmin, minOp<scalar>());
+    if (Jmin != globalMin)
+    {
+        where = point::max;
+    }
+    reduce(where, minOp<point>());
+    return globalMin;
+}
+
+
+Foam::scalar Foam::solidBody::kineticEnergy() const
+{
+    const scalarField& V = dual_.volumes();
+    scalarField e(lm_.size());
+    const scalar half = 0.5/material_->rho();
+    forAll(lm_, i)
+    {
+        e[i] = half*V[i]*magSqr(lm_[i]);
+    }
+    return dual_.sumPoints(e);
+}
+
+
+Foam::scalar Foam::solidBody::strainEnergy() const
+{
+    scalarField W(F_.size());
+    material_->energy(F_, Hc(), Jc(), W);
+    W *= dual_.volumes();
+    return dual_.sumPoints(W);
+}
+
+
+Foam::vector Foam::solidBody::linearMomentum() const
+{
+    const scalarField& V = dual_.volumes();
+    vector sum(Zero);
+    forAll(lm_, i)
+    {
+        sum += dual_.pointWeights()[i]*V[i]*lm_[i];
+    }
+    reduce(sum, sumOp<vector>());
+    return sum;
+}
+
+
+Foam::label Foam::solidBody::findPoint(const point& X) const
+{
+    const pointField& pts = mesh_.points();
+    label nearest = -1;
+    scalar d2 = GREAT;
+    forAll(pts, i)
+    {
+        const scalar d = magSqr(pts[i] - X);
+        if (d < d2)
+        {
+            d2 = d;
+            nearest = i;
+        }
+    }
+    const scalar globalD2 = returnReduce(d2, minOp<scalar>());
+    label owner = (d2 == globalD2) ? Pstream::myProcNo() : Pstream::nProcs();
+    reduce(owner, minOp<label>());
+    return (owner == Pstream::myProcNo()) ? nearest : -1;
+}
+
+
+Foam::symmTensor Foam::solidBody::cauchyStress(const label i) const
+{
+    return symm(P_[i] & F_[i].T())/Jc()[i];
+}
+
+
+void Foam::solidBody::write() const
+{
+    writePointField(mesh_, "lm", lm_, dimDensity*dimVelocity);
+    writePointField(mesh_, "u", u_, dimLength);
+    writePointField(mesh_, "F", F_, dimless);
+    if (HLaw_) writePointField(mesh_, "H", H_, dimless);
+    if (JLaw_) writePointField(mesh_, "J", J_, dimless);
+    writePointField(mesh_, "v", v_, dimVelocity);
+
+    List<symmTensor> sigma(P_.size());
+    scalarList p(P_.size());
+    forAll(sigma, i)
+    {
+        sigma[i] = cauchyStress(i);
+        p[i] = -tr(sigma[i])/3.0;
+    }
+    writePointField(mesh_, "sigma", sigma, dimPressure);
+    writePointField(mesh_, "p", p, dimPressure);
+}
+
+
+void Foam::solidBody::describe(Ostream& os) const
+{
+    os  << "Body " << name_ << ": " << nGlobalPoints() << " points, "
+        << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells" << nl
+        << "    material   ";
+    material_->describe(os);
+    os  << nl << "    solves     p, F"
+        << (HLaw_ ? ", H" : "") << (JLaw_ ? ", J" : "")
+        << (HLaw_ ? "" : "; H = cof F") << (JLaw_ ? "" : "; J = det F")
+        << nl << "    scheme     ";
+    if (secondOrder_)
+    {
+        os  << "second order, limiter " << limiter_->type().c_str() << nl;
+    }
+    else
+    {
+        os  << "first order (Godunov)" << nl;
+    }
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        os  << "    patch " << bc.patchName() << ": ";
+        bc.describe(os);
+        os  << nl;
+    }
+}
+
+
+// ************************************************************************* //

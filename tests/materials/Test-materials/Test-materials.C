@@ -1,0 +1,207 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+-------------------------------------------------------------------------------
+Application
+    Test-materials
+
+Description
+    Checks every hyperelastic material against invariants and exact values:
+      - P is the derivative of W(F, cof F, det F) (central differences through
+        the chain with H and J) for random deformations;
+      - objectivity: P(Q F) = Q P(F) for a rotation Q;
+      - small strain: P(I + eps G) / eps -> the linear elastic stress;
+      - wave speeds from (E, nu) as in method.md;
+      - Hugoniot pressure p_H(J) = rho c^2 (J-1)/[1 - s(1-J)]^2 in compression.
+    The tensor cross product is checked against H = cof F, J = H:F/3.
+    Exits non-zero if a check fails.
+
+\*---------------------------------------------------------------------------*/
+
+#include "materialModel.H"
+#include "tensorCross.H"
+#include "Random.H"
+#include "IStringStream.H"
+#include "quaternion.H"
+
+using namespace Foam;
+
+label nFailed = 0;
+
+void check(const bool ok, const string& what, const scalar value, const scalar tol)
+{
+    Info<< "    " << (ok ? "PASS " : "FAIL ") << what.c_str() << ": " << value
+        << " (tolerance " << tol << ")" << endl;
+    if (!ok) ++nFailed;
+}
+
+
+scalar totalEnergy(const materialModel& m, const tensor& F)
+{
+    List<tensor> Fl(1, F), Hl(1, cofactor(F));
+    List<scalar> Jl(1, det(F)), W(1);
+    m.energy(Fl, Hl, Jl, W);
+    return W[0];
+}
+
+
+tensor stressOf(const materialModel& m, const tensor& F)
+{
+    List<tensor> Fl(1, F), Hl(1, cofactor(F)), P(1);
+    List<scalar> Jl(1, det(F)), SJ(1);
+    m.stress(Fl, Hl, Jl, P, SJ);
+    return P[0];
+}
+
+
+int main(int argc, char *argv[])
+{
+    Random rnd(12345);
+
+    // Tensor algebra
+    {
+        scalar err = 0;
+        for (label k = 0; k < 20; ++k)
+        {
+            tensor F(I);
+            for (direction c = 0; c < 9; ++c) F[c] += 0.3*(rnd.sample01<scalar>() - 0.5);
+            const tensor H(cofactor(F));
+            err = max(err, mag(H - det(F)*inv(F).T())/mag(H));
+            err = max(err, mag((H && F)/3 - det(F))/mag(det(F)));
+            const tensor A(F), B(F + I);
+            err = max(err, mag(tensorCross(A, B) - tensorCross(B, A)));
+        }
+        Info<< "tensor cross product" << endl;
+        check(err < 1e-13, "H = cof F = J F^-T, J = H:F/3, AxB = BxA", err, 1e-13);
+    }
+
+    const char* dicts[] =
+    {
+        "type linearElastic; rho 1000; E 1e6; nu 0.3;",
+        "type neoHookean; rho 1000; E 1e6; nu 0.3;",
+        "type neoHookean; rho 8930; E 5.85e8; nu 0.495;",
+        "type mooneyRivlin; rho 1000; E 1e6; nu 0.3; xi 5e4;",
+        "type neoHookean; rho 0.01; kappa 100; mu 0; hugoniot { s 1; }",
+        "type neoHookean; rho 1000; E 1e6; nu 0.3; hugoniot { s 1.5; }"
+    };
+
+    for (const char* text : dicts)
+    {
+        const dictionary dict((IStringStream(text))());
+        autoPtr<materialModel> model(materialModel::New(dict, 1));
+        const materialModel& m = model();
+        const word type(dict.get<word>("type"));
+        const bool finiteStrain = (type != "linearElastic");
+        Info<< nl << text << endl;
+
+        // Wave speeds
+        {
+            const scalar lambda = m.kappa() - 2*m.mu()/3;
+            const scalar cpExact = Foam::sqrt((lambda + 2*m.mu())/m.rho());
+            check(mag(m.cp() - cpExact)/cpExact < 1e-14, "c_p", m.cp(), 1e-14);
+            if (dict.found("E"))
+            {
+                const scalar E = dict.get<scalar>("E");
+                const scalar nu = dict.get<scalar>("nu");
+                const scalar mu = E/(2*(1 + nu));
+                const scalar lam = E*nu/((1 + nu)*(1 - 2*nu));
+                check
+                (
+                    mag(m.cp() - Foam::sqrt((lam + 2*mu)/m.rho()))/m.cp() < 1e-12
+                 && mag(m.cs() - Foam::sqrt(mu/m.rho()))/max(m.cs(), SMALL) < 1e-12,
+                    "c_p, c_s from (E, nu)", m.cs(), 1e-12
+                );
+            }
+        }
+
+        // P = dW/dF through the chain with H = cof F, J = det F
+        {
+            const scalar amp = finiteStrain ? 0.4 : 0.02;
+            scalar err = 0;
+            for (label k = 0; k < 20; ++k)
+            {
+                tensor F(I);
+                for (direction c = 0; c < 9; ++c) F[c] += amp*(rnd.sample01<scalar>() - 0.5);
+                if (m.hugoniot() && k % 2 == 0)
+                {
+                    F = 0.85*F;     // compression: the Hugoniot branch
+                }
+                const tensor P(stressOf(m, F));
+                tensor dW(Zero);
+                const scalar h = 1e-6;
+                for (direction c = 0; c < 9; ++c)
+                {
+                    tensor Fp(F), Fm(F);
+                    Fp[c] += h; Fm[c] -= h;
+                    dW[c] = (totalEnergy(m, Fp) - totalEnergy(m, Fm))/(2*h);
+                }
+                const scalar scale = max(mag(P), m.kappa()*1e-3);
+                err = max(err, mag(P - dW)/scale);
+            }
+            // The Hugoniot energy is the jump-condition energy, not the
+            // potential of p_H: only the elastic branch is a derivative
+            if (!m.hugoniot())
+            {
+                check(err < 1e-6, "P = dW/dF (central differences)", err, 1e-6);
+            }
+        }
+
+        // Objectivity
+        if (finiteStrain)
+        {
+            scalar err = 0;
+            for (label k = 0; k < 10; ++k)
+            {
+                tensor F(I);
+                for (direction c = 0; c < 9; ++c) F[c] += 0.4*(rnd.sample01<scalar>() - 0.5);
+                const vector axis(rnd.sample01<vector>() - vector::uniform(0.5));
+                const tensor Q
+                (
+                    quaternion(axis/mag(axis), 2.1*rnd.sample01<scalar>()).R()
+                );
+                err = max
+                (
+                    err,
+                    mag(stressOf(m, Q & F) - (Q & stressOf(m, F)))
+                   /mag(stressOf(m, F))
+                );
+            }
+            check(err < 1e-12, "objectivity P(QF) = Q P(F)", err, 1e-12);
+        }
+
+        // Small strain: linear elasticity
+        if (m.mu() > 0)
+        {
+            const scalar eps = 1e-7;
+            tensor G(Zero);
+            for (direction c = 0; c < 9; ++c) G[c] = rnd.sample01<scalar>() - 0.5;
+            const tensor P(stressOf(m, I + eps*G)/eps);
+            const tensor Plin
+            (
+                m.mu()*(G + G.T()) + m.lambda()*tr(G)*I
+            );
+            const scalar err = mag(P - Plin)/mag(Plin);
+            check(err < 1e-5, "small strain -> linear elasticity", err, 1e-5);
+        }
+
+        // Hugoniot pressure (uniaxial strain: P_xx = p_H(J) when mu = 0)
+        if (m.hugoniot() && m.mu() == 0)
+        {
+            const scalar s = m.hugoniotS();
+            const scalar J = 0.6;
+            const tensor F(J, 0, 0, 0, 1, 0, 0, 0, 1);
+            const scalar pH = m.rho()*sqr(m.cp())*(J - 1)/sqr(1 - s*(1 - J));
+            const scalar err = mag(stressOf(m, F).xx() - pH)/mag(pH);
+            check(err < 1e-13, "Hugoniot P_xx = p_H(J) in compression", err, 1e-13);
+        }
+    }
+
+    // Bad input is rejected with FatalIOError: checked by the test script
+
+    Info<< nl << (nFailed ? "FAILED " : "All checks passed ")
+        << "(" << nFailed << " failed)" << endl;
+    return nFailed ? 1 : 0;
+}
+
+
+// ************************************************************************* //

@@ -65,6 +65,11 @@ int main(int argc, char *argv[])
 
         #include "checkState.H"
 
+        for (solidBody& b : bodies)
+        {
+            b.endStep();
+        }
+
         forAll(monitors, b)
         {
             monitors[b].write(runTime.value());

@@ -94,7 +94,7 @@ Foam::scalar Foam::bodyMonitor::write(const scalar t)
 {
     const scalar KE = body_.kineticEnergy();
     const scalar SE = body_.strainEnergy();
-    const scalar Dp = 0;
+    const scalar Dp = body_.plasticDissipation();
     const scalar Wext = body_.externalWork();
     const scalar E = KE + SE;
     const scalar Dnum = E0_ + Wext - E - Dp;

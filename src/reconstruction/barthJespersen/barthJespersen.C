@@ -20,19 +20,20 @@ namespace
 {
 
 // Limit of one end: extrapolated increment d towards the edge midpoint.
-// Increments at round-off level relative to the local values are not
-// limited: in flat regions (fmax - fi)/d would be noise over noise, and
-// the result would depend on the order of summation (serial != parallel).
+// Increments below 'noise' (a tiny fraction of the body-wide magnitude of
+// the quantity) are not limited: for components that are zero up to
+// round-off (transverse velocity of a 1D wave, say) (fmax - fi)/d would be
+// noise over noise, and the limited scheme would amplify round-off (and
+// parallel runs would drift from serial ones).
 inline Foam::scalar bjRatio
 (
     const Foam::scalar d,
     const Foam::scalar fi,
     const Foam::scalar fmin,
-    const Foam::scalar fmax
+    const Foam::scalar fmax,
+    const Foam::scalar noise
 )
 {
-    const Foam::scalar noise =
-        1e-12*(Foam::mag(fmax) + Foam::mag(fmin)) + Foam::VSMALL;
     if (Foam::mag(d) <= noise)
     {
         return 1.0;
@@ -87,6 +88,28 @@ void Foam::limiters::barthJespersen::limit
         );
     }
 
+    // Body-wide magnitudes: velocity components share one, stress
+    // components (P and Sigma_J) another
+    scalar vScale = 0, PScale = 0;
+    forAll(q, i)
+    {
+        for (direction c = 0; c < 3; ++c)
+        {
+            vScale = max(vScale, mag(q[i][c]));
+        }
+        for (direction c = 3; c < nFluxComponents; ++c)
+        {
+            PScale = max(PScale, mag(q[i][c]));
+        }
+    }
+    reduce(vScale, maxOp<scalar>());
+    reduce(PScale, maxOp<scalar>());
+    fluxState noise;
+    for (direction c = 0; c < nFluxComponents; ++c)
+    {
+        noise[c] = relativeNoise_*(c < 3 ? vScale : PScale) + VSMALL;
+    }
+
     for (label i = 0; i < nPts; ++i)
     {
         phi[i] = 1.0;
@@ -101,12 +124,20 @@ void Foam::limiters::barthJespersen::limit
             phi[i][c] = min
             (
                 phi[i][c],
-                bjRatio(G[i][c] & halfdX, q[i][c], qMin[i][c], qMax[i][c])
+                bjRatio
+                (
+                    G[i][c] & halfdX, q[i][c], qMin[i][c], qMax[i][c],
+                    noise[c]
+                )
             );
             phi[j][c] = min
             (
                 phi[j][c],
-                bjRatio(-(G[j][c] & halfdX), q[j][c], qMin[j][c], qMax[j][c])
+                bjRatio
+                (
+                    -(G[j][c] & halfdX), q[j][c], qMin[j][c], qMax[j][c],
+                    noise[c]
+                )
             );
         }
     }

@@ -5,7 +5,7 @@
 
 #include "solidBody.H"
 #include "Time.H"
-#include "pointFields.H"
+#include "pointFieldIO.H"
 #include "emptyPolyPatch.H"
 #include "tensorCross.H"
 #include "acousticFormulas.H"
@@ -16,58 +16,6 @@ namespace
 {
 
 using namespace Foam;
-
-template<class Type>
-bool readPointField(const polyMesh& mesh, const word& name, List<Type>& values)
-{
-    typedef GeometricField<Type, pointPatchField, pointMesh> fieldType;
-
-    IOobject io
-    (
-        name, mesh.time().timeName(), mesh,
-        IOobject::MUST_READ, IOobject::NO_WRITE, false
-    );
-    if (!io.typeHeaderOk<fieldType>(true))
-    {
-        return false;
-    }
-    const fieldType fld(io, pointMesh::New(mesh));
-    if (fld.size() != values.size())
-    {
-        FatalErrorInFunction
-            << "Field " << fld.objectPath() << " has " << fld.size()
-            << " values for " << values.size() << " points"
-            << exit(FatalError);
-    }
-    values = fld.primitiveField();
-    return true;
-}
-
-
-template<class Type>
-void writePointField
-(
-    const polyMesh& mesh,
-    const word& name,
-    const UList<Type>& values,
-    const dimensionSet& dims
-)
-{
-    GeometricField<Type, pointPatchField, pointMesh> fld
-    (
-        IOobject
-        (
-            name, mesh.time().timeName(), mesh,
-            IOobject::NO_READ, IOobject::NO_WRITE, false
-        ),
-        pointMesh::New(mesh),
-        dimensioned<Type>(dims, Zero),
-        calculatedPointPatchField<Type>::typeName
-    );
-    fld.primitiveFieldRef() = values;
-    fld.write();
-}
-
 
 // FatalIOError for any keyword of dict not in the allowed list
 void checkKeywords(const dictionary& dict, const wordList& allowed)
@@ -99,7 +47,11 @@ void Foam::solidBody::readScheme()
     );
 
     const dictionary& scheme = dict_.subOrEmptyDict("scheme");
-    checkKeywords(scheme, {"secondOrder", "limiter", "JLaw", "HLaw"});
+    checkKeywords
+    (
+        scheme,
+        {"secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw"}
+    );
 
     JLaw_ = scheme.getOrDefault<Switch>("JLaw", true);
     HLaw_ = scheme.getOrDefault<Switch>("HLaw", false);
@@ -337,12 +289,19 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     bodyForce_(dict_.getOrDefault<vector>("bodyForce", Zero)),
     Wext_(0),
     Wext0_(0),
+    Dplastic_(0),
+    dDplastic_(),
     power_(0)
 {
     readScheme();
     material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
     createBoundaryConditions();
     readState();
+    material_->readState(mesh_);
+    if (material_->plastic())
+    {
+        dDplastic_.setSize(mesh_.nPoints());
+    }
 
     const label nPts = mesh_.nPoints();
     v_.setSize(nPts);
@@ -450,7 +409,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     {
         forAll(q_, i)
         {
-            packFluxState(v_[i], P_[i], q_[i]);
+            packFluxState(v_[i], P_[i], SigmaJ_[i], q_[i]);
         }
         computeGradients();
         limiter_->limit(dual_, q_, G_, phi_);
@@ -466,6 +425,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
 
         vector vL, vR;
         tensor PL, PR;
+        scalar SJL, SJR;
         if (secondOrder_)
         {
             const vector halfdX(0.5*(X[j] - X[i]));
@@ -484,6 +444,8 @@ void Foam::solidBody::assembleResiduals(const scalar t)
             vR = fluxVelocity(qR);
             PL = fluxStress(qL);
             PR = fluxStress(qR);
+            SJL = fluxSigmaJ(qL);
+            SJR = fluxSigmaJ(qR);
         }
         else
         {
@@ -491,6 +453,8 @@ void Foam::solidBody::assembleResiduals(const scalar t)
             vR = v_[j];
             PL = P_[i];
             PR = P_[j];
+            SJL = SigmaJ_[i];
+            SJR = SigmaJ_[j];
         }
 
         // Spatial normal from the average area map
@@ -511,8 +475,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
 
         if (JLaw_)
         {
-            const scalar dS =
-                Sfactor*A*(hN & hN)*(SigmaJ_[j] - SigmaJ_[i]);
+            const scalar dS = Sfactor*A*(hN & hN)*(SJR - SJL);
             RJ_[i] += dS;
             RJ_[j] -= dS;
         }
@@ -576,6 +539,21 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
     }
 
     Wext_ = a*Wext0_ + b*(Wext_ + dt*power_);
+}
+
+
+void Foam::solidBody::endStep()
+{
+    if (material_->plastic())
+    {
+        material_->updateState(F_, Jc(), dDplastic_);
+        forAll(dDplastic_, i)
+        {
+            dDplastic_[i] *= dual_.volumes()[i];
+        }
+        Dplastic_ += dual_.sumPoints(dDplastic_);
+        updateConstitutive();
+    }
 }
 
 
@@ -701,6 +679,7 @@ void Foam::solidBody::write() const
     }
     writePointField(mesh_, "sigma", sigma, dimPressure);
     writePointField(mesh_, "p", p, dimPressure);
+    material_->writeState(mesh_);
 }
 
 

@@ -196,6 +196,80 @@ int main(int argc, char *argv[])
         }
     }
 
+    // von Mises plasticity (Hencky, linear isotropic hardening)
+    {
+        const char* text =
+            "type vonMisesPlasticity; rho 8930; E 117e9; nu 0.35;"
+            " yieldStress 0.4e9; hardening 0.1e9;";
+        Info<< nl << text << endl;
+        const dictionary dict((IStringStream(text))());
+        autoPtr<materialModel> model(materialModel::New(dict, 1));
+        materialModel& m = model.ref();
+        const scalar E = m.E(), ty = 0.4e9, Hh = 0.1e9;
+
+        // Elastic range: P = dW/dF
+        {
+            scalar err = 0;
+            for (label k = 0; k < 10; ++k)
+            {
+                tensor F(I);
+                for (direction c = 0; c < 9; ++c) F[c] += 2e-3*(rnd.sample01<scalar>() - 0.5);
+                const tensor P(stressOf(m, F));
+                tensor dW(Zero);
+                const scalar h = 1e-8;
+                for (direction c = 0; c < 9; ++c)
+                {
+                    tensor Fp(F), Fm(F);
+                    Fp[c] += h; Fm[c] -= h;
+                    dW[c] = (totalEnergy(m, Fp) - totalEnergy(m, Fm))/(2*h);
+                }
+                err = max(err, mag(P - dW)/mag(P));
+            }
+            check(err < 1e-5, "elastic range: P = dW/dF", err, 1e-5);
+        }
+
+        // Uniaxial stress at log strain eps (monotonic, from the virgin
+        // state): find the lateral stretch with zero lateral stress;
+        // exact tau_xx = E (tau_y0 + Hh eps)/(E + Hh)
+        const scalar eps = 0.05;
+        const scalar lx = Foam::exp(eps);
+        scalar lo = 0.9, hi = 1.0;
+        tensor F(I), P(Zero);
+        for (label it = 0; it < 200; ++it)
+        {
+            const scalar lt = 0.5*(lo + hi);
+            F = tensor(lx, 0, 0, 0, lt, 0, 0, 0, lt);
+            P = stressOf(m, F);
+            if (P.yy() > 0) hi = lt; else lo = lt;
+        }
+        const scalar tauxx = P.xx()*F.xx();
+        const scalar exact = E*(ty + Hh*eps)/(E + Hh);
+        check
+        (
+            mag(tauxx - exact)/exact < 1e-6,
+            "uniaxial Kirchhoff stress = E (tau_y0 + H eps)/(E + H)",
+            mag(tauxx - exact)/exact, 1e-6
+        );
+
+        // Yield condition after return: f = 0 on the returned state
+        List<tensor> Fl(1, F);
+        List<scalar> Jl(1, det(F)), dD(1, 0.0);
+        m.updateState(Fl, Jl, dD);
+        const tensor P2(stressOf(m, F));
+        const tensor tau(P2 & F.T());
+        const scalar seq = Foam::sqrt(1.5)*mag(dev(tau));
+        const scalar f = seq - (ty + Hh*m.epsP()[0]);
+        check(mag(f)/ty < 1e-10, "yield condition after return |f|/tau_y0",
+            mag(f)/ty, 1e-10);
+        check(mag(P2 - P)/mag(P) < 1e-10,
+            "stress unchanged by storing the returned state",
+            mag(P2 - P)/mag(P), 1e-10);
+        const scalar epsPexact = eps - exact/E;
+        check(mag(m.epsP()[0] - epsPexact)/epsPexact < 1e-6,
+            "plastic strain = eps - tau/E", m.epsP()[0], 1e-6);
+        check(dD[0] > 0, "plastic dissipation increment > 0", dD[0], 0);
+    }
+
     // Bad input is rejected with FatalIOError: checked by the test script
 
     Info<< nl << (nFailed ? "FAILED " : "All checks passed ")

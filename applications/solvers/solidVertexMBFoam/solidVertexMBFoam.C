@@ -21,7 +21,7 @@ Description
 #include "argList.H"
 #include "Time.H"
 #include "regionProperties.H"
-#include "clockTime.H"
+#include "runStatistics.H"
 #include "solidBody.H"
 #include "bodyMonitor.H"
 #include "tvdRungeKutta2.H"
@@ -40,9 +40,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createBodies.H"
 
-    const clockTime wallClock;
-    const label nPointStagesPerStep = tvdRungeKutta2::nStages*nPoints;
-    label nSteps = 0;
+    runStatistics stats(nPoints, tvdRungeKutta2::nStages);
     scalar nextReport = 0;
     const scalar endTime = runTime.endTime().value();
     const scalar startTime = runTime.value();
@@ -60,8 +58,9 @@ int main(int argc, char *argv[])
         const scalar t0 = runTime.value();
         ++runTime;
 
-        tvdRungeKutta2::step(bodies, t0, runTime.deltaTValue());
-        ++nSteps;
+        const bool stepOk =
+            tvdRungeKutta2::step(bodies, t0, runTime.deltaTValue());
+        stats.step();
 
         #include "checkState.H"
 
@@ -87,8 +86,8 @@ int main(int argc, char *argv[])
             (runTime.value() - startTime)/max(endTime - startTime, VSMALL);
         if (progress >= nextReport || !runTime.run())
         {
-            const scalar wall = wallClock.elapsedTime();
-            Info<< "t = " << runTime.timeName() << "  step " << nSteps
+            const scalar wall = stats.wallTime();
+            Info<< "t = " << runTime.timeName() << "  step " << stats.nSteps()
                 << "  dt " << runTime.deltaTValue()
                 << "  " << label(100*progress + 0.5) << "%"
                 << "  wall " << wall << " s  left "
@@ -98,13 +97,9 @@ int main(int argc, char *argv[])
         }
     }
 
-    const scalar wall = max(wallClock.elapsedTime(), scalar(1e-9));
-    Info<< nl << "Finished " << nSteps << " steps in " << wall << " s wall"
-        << nl << "Throughput: "
-        << scalar(nSteps)*nPointStagesPerStep/wall/Pstream::nProcs()
-        << " point-stage updates per second per core ("
-        << nPoints << " points, " << Pstream::nProcs() << " cores)"
-        << nl << endl;
+    Info<< nl;
+    stats.report(Info);
+    Info<< endl;
 
     Info<< "End\n" << endl;
     return 0;

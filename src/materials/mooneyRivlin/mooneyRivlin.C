@@ -45,16 +45,19 @@ void Foam::materialModels::mooneyRivlin::stress
 {
     forAll(F, i)
     {
-        const scalar j23 = pow(J[i], -2.0/3.0);
+        // Isochoric part from F and H (through det F), volumetric part
+        // from the conserved J
+        const scalar detF = (H[i] && F[i])/3.0;
+        const scalar j23 = pow(detF, -2.0/3.0);
         const scalar FF = F[i] && F[i];
         const scalar HH = H[i] && H[i];
-        const scalar J2 = J[i]*J[i];
-        const scalar sJ =
-            -(2.0/3.0)*zeta_*j23*FF/J[i]
-          - 2*xi_*HH*sqrt(HH)/(J2*J[i])
-          + volumetricSigmaJ(J[i]);
-        const tensor SigmaH((3*xi_*sqrt(HH)/J2)*H[i]);
-        P[i] = 2*zeta_*j23*F[i] + tensorCross(SigmaH, F[i]) + sJ*H[i];
+        const scalar d2 = detF*detF;
+        const scalar sDet =
+            -(2.0/3.0)*zeta_*j23*FF/detF
+          - 2*xi_*HH*sqrt(HH)/(d2*detF);
+        const scalar sJ = volumetricSigmaJ(J[i]);
+        const tensor SigmaH((3*xi_*sqrt(HH)/d2)*H[i]);
+        P[i] = 2*zeta_*j23*F[i] + tensorCross(SigmaH, F[i]) + (sDet + sJ)*H[i];
         SigmaJ[i] = sJ;
     }
 }
@@ -71,9 +74,10 @@ void Foam::materialModels::mooneyRivlin::energy
     forAll(F, i)
     {
         const scalar HH = H[i] && H[i];
+        const scalar detF = (H[i] && F[i])/3.0;
         W[i] =
-            zeta_*pow(J[i], -2.0/3.0)*(F[i] && F[i])
-          + xi_*HH*sqrt(HH)/sqr(J[i])
+            zeta_*pow(detF, -2.0/3.0)*(F[i] && F[i])
+          + xi_*HH*sqrt(HH)/sqr(detF)
           - 3*(zeta_ + sqrt(3.0)*xi_)
           + volumetricEnergy(J[i]);
     }

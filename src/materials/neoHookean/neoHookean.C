@@ -34,10 +34,13 @@ void Foam::materialModels::neoHookean::stress
 {
     forAll(F, i)
     {
-        const scalar j23 = pow(J[i], -2.0/3.0);
+        // Isochoric part from F (through det F = H:F/3), volumetric part
+        // from the conserved J (see the class description)
+        const scalar detF = (H[i] && F[i])/3.0;
+        const scalar j23 = pow(detF, -2.0/3.0);
         const scalar FF = F[i] && F[i];
-        const scalar sJ = -(mu_/3.0)*j23*FF/J[i] + volumetricSigmaJ(J[i]);
-        P[i] = mu_*j23*F[i] + sJ*H[i];
+        const scalar sJ = volumetricSigmaJ(J[i]);
+        P[i] = mu_*j23*F[i] + (sJ - (mu_/3.0)*j23*FF/detF)*H[i];
         SigmaJ[i] = sJ;
     }
 }
@@ -53,8 +56,9 @@ void Foam::materialModels::neoHookean::energy
 {
     forAll(F, i)
     {
+        const scalar detF = (H[i] && F[i])/3.0;
         W[i] =
-            0.5*mu_*(pow(J[i], -2.0/3.0)*(F[i] && F[i]) - 3)
+            0.5*mu_*(pow(detF, -2.0/3.0)*(F[i] && F[i]) - 3)
           + volumetricEnergy(J[i]);
     }
 }

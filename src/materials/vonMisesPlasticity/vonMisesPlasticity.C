@@ -123,14 +123,16 @@ void Foam::materialModels::vonMisesPlasticity::stress
             lnLam, dirs, tauDev, dgamma, Jp, Fbar
         );
 
-        tensor tau(Zero);
+        // Isochoric (deviatoric Kirchhoff) part through F, pressure from
+        // the conserved J: P = tau' F^-T + Sigma_J(J) cof F
+        tensor tauDevTensor(Zero);
         for (direction a = 0; a < 3; ++a)
         {
             const vector n(dirs.row(a));
-            tau += (tauDev[a] + Jp)*(n*n);
+            tauDevTensor += tauDev[a]*(n*n);
         }
-        P[i] = tau & inv(Fbar).T();
         SigmaJ[i] = Jp/J[i];
+        P[i] = (tauDevTensor & inv(F[i]).T()) + SigmaJ[i]*H[i];
     }
 }
 

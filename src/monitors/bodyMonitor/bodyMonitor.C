@@ -10,7 +10,6 @@
 Foam::bodyMonitor::bodyMonitor(const solidBody& body)
 :
     body_(body),
-    E0_(body.kineticEnergy() + body.strainEnergy()),
     probePoints_(),
     probeLocations_()
 {
@@ -97,7 +96,7 @@ Foam::scalar Foam::bodyMonitor::write(const scalar t)
     const scalar Dp = body_.plasticDissipation();
     const scalar Wext = body_.externalWork();
     const scalar E = KE + SE;
-    const scalar Dnum = E0_ + Wext - E - Dp;
+    const scalar Dnum = body_.initialEnergy() + Wext - E - Dp;
     const vector pm(body_.linearMomentum());
 
     List<scalar> values(12*probePoints_.size(), 0.0);
@@ -128,13 +127,13 @@ Foam::scalar Foam::bodyMonitor::write(const scalar t)
         energyFile_()
             << t << ',' << KE << ',' << SE << ',' << Dp << ',' << Wext
             << ',' << E << ',' << Dnum << ',' << pm.x() << ',' << pm.y()
-            << ',' << pm.z() << nl;
+            << ',' << pm.z() << endl;
         probeFile_() << t;
         forAll(values, c)
         {
             probeFile_() << ',' << values[c];
         }
-        probeFile_() << nl;
+        probeFile_() << endl;
     }
 
     return Dnum;

@@ -19,30 +19,39 @@ namespace limiters
 namespace
 {
 
-// Limit of one end: extrapolated increment d towards the edge midpoint.
-// Increments below 'noise' (a tiny fraction of the body-wide magnitude of
-// the quantity) are not limited: for components that are zero up to
-// round-off (transverse velocity of a 1D wave, say) (fmax - fi)/d would be
-// noise over noise, and the limited scheme would amplify round-off (and
-// parallel runs would drift from serial ones).
-inline Foam::scalar bjRatio
+// Limit one end: lower phi so that fi + phi d stays within [fmin, fmax],
+// d the unlimited increment towards the edge midpoint.  Increments below
+// 'noise' (a tiny fraction of the body-wide magnitude of the quantity) are
+// not limited: for components that are zero up to round-off (transverse
+// velocity of a 1D wave, say) the ratio would be noise over noise and the
+// limited scheme would amplify round-off.  The division is done only when
+// it lowers phi.
+inline void bjLimit
 (
     const Foam::scalar d,
     const Foam::scalar fi,
     const Foam::scalar fmin,
     const Foam::scalar fmax,
-    const Foam::scalar noise
+    const Foam::scalar noise,
+    Foam::scalar& phi
 )
 {
-    if (Foam::mag(d) <= noise)
+    if (d > noise)
     {
-        return 1.0;
+        const Foam::scalar room = fmax - fi;
+        if (phi*d > room)
+        {
+            phi = room/d;
+        }
     }
-    if (d > 0)
+    else if (d < -noise)
     {
-        return Foam::min(1.0, (fmax - fi)/d);
+        const Foam::scalar room = fmin - fi;
+        if (phi*d < room)
+        {
+            phi = room/d;
+        }
     }
-    return Foam::min(1.0, (fmin - fi)/d);
 }
 
 } // End anonymous namespace
@@ -62,7 +71,10 @@ void Foam::limiters::barthJespersen::limit
     const label nPts = q.size();
 
     // Neighbourhood extrema (the point itself included)
-    List<fluxState> qMin(q), qMax(q);
+    List<fluxState>& qMin = qMin_;
+    List<fluxState>& qMax = qMax_;
+    qMin = q;
+    qMax = q;
     forAll(es, e)
     {
         const label i = es[e], j = ee[e];
@@ -121,23 +133,15 @@ void Foam::limiters::barthJespersen::limit
         const vector halfdX(0.5*(X[j] - X[i]));
         for (direction c = 0; c < nFluxComponents; ++c)
         {
-            phi[i][c] = min
+            bjLimit
             (
-                phi[i][c],
-                bjRatio
-                (
-                    G[i][c] & halfdX, q[i][c], qMin[i][c], qMax[i][c],
-                    noise[c]
-                )
+                G[i][c] & halfdX, q[i][c], qMin[i][c], qMax[i][c],
+                noise[c], phi[i][c]
             );
-            phi[j][c] = min
+            bjLimit
             (
-                phi[j][c],
-                bjRatio
-                (
-                    -(G[j][c] & halfdX), q[j][c], qMin[j][c], qMax[j][c],
-                    noise[c]
-                )
+                -(G[j][c] & halfdX), q[j][c], qMin[j][c], qMax[j][c],
+                noise[c], phi[j][c]
             );
         }
     }

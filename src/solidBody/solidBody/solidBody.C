@@ -187,6 +187,27 @@ void Foam::solidBody::readState()
 }
 
 
+void Foam::solidBody::readBookkeeping()
+{
+    IOobject io
+    (
+        "bodyState", runTime_.timeName(), "uniform", mesh_,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        const IOdictionary state(io);
+        E0_ = state.get<scalar>("initialEnergy");
+        Wext_ = state.get<scalar>("externalWork");
+        Dplastic_ = state.get<scalar>("plasticDissipation");
+    }
+    else
+    {
+        E0_ = kineticEnergy() + strainEnergy();
+    }
+}
+
+
 void Foam::solidBody::computeGradients()
 {
     const labelList& es = dual_.edgeStart();
@@ -289,10 +310,16 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     bodyForce_(dict_.getOrDefault<vector>("bodyForce", Zero)),
     Wext_(0),
     Wext0_(0),
+    E0_(0),
     Dplastic_(0),
     dDplastic_(),
     power_(0)
 {
+    // The dual mesh holds all the solver needs: free OpenFOAM's
+    // demand-driven geometry and addressing (rebuilt on demand if needed)
+    mesh_.clearGeom();
+    mesh_.clearAddressing();
+
     readScheme();
     material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
     createBoundaryConditions();
@@ -322,6 +349,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     }
 
     updateConstitutive();
+    readBookkeeping();
 }
 
 
@@ -356,7 +384,7 @@ void Foam::solidBody::restoreState()
 }
 
 
-void Foam::solidBody::updateConstitutive()
+bool Foam::solidBody::updateConstitutive()
 {
     const pointField& X = mesh_.points();
     const scalar invRho = 1.0/material_->rho();
@@ -381,7 +409,24 @@ void Foam::solidBody::updateConstitutive()
         }
     }
 
-    material_->stress(F_, Hc(), Jc(), P_, SigmaJ_);
+    // An inverted or collapsed volume (or NaN) must not reach the material
+    // (pow of a negative J); the time loop reports it
+    const List<scalar>& J = Jc();
+    bool ok = true;
+    forAll(J, i)
+    {
+        if (!(J[i] > 0))
+        {
+            ok = false;
+            break;
+        }
+    }
+    if (returnReduce(ok, andOp<bool>()))
+    {
+        material_->stress(F_, Hc(), J, P_, SigmaJ_);
+        return true;
+    }
+    return false;
 }
 
 
@@ -680,6 +725,24 @@ void Foam::solidBody::write() const
     writePointField(mesh_, "sigma", sigma, dimPressure);
     writePointField(mesh_, "p", p, dimPressure);
     material_->writeState(mesh_);
+
+    // Energy bookkeeping for restarts
+    IOdictionary state
+    (
+        IOobject
+        (
+            "bodyState", runTime_.timeName(), "uniform", mesh_,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        )
+    );
+    state.add("initialEnergy", E0_);
+    state.add("externalWork", Wext_);
+    state.add("plasticDissipation", Dplastic_);
+    state.regIOobject::writeObject
+    (
+        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
+        true
+    );
 }
 
 

@@ -21,13 +21,14 @@ Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
 }
 
 
-void Foam::tvdRungeKutta2::step
+bool Foam::tvdRungeKutta2::step
 (
     PtrList<solidBody>& bodies,
     const scalar t,
     const scalar dt
 )
 {
+    bool ok = true;
     for (solidBody& b : bodies)
     {
         b.storeState();
@@ -36,7 +37,11 @@ void Foam::tvdRungeKutta2::step
     for (solidBody& b : bodies)
     {
         b.rkStage(dt, 0);
-        b.updateConstitutive();
+        ok = b.updateConstitutive() && ok;
+    }
+    if (!ok)
+    {
+        return false;
     }
     for (solidBody& b : bodies)
     {
@@ -45,8 +50,9 @@ void Foam::tvdRungeKutta2::step
     for (solidBody& b : bodies)
     {
         b.rkStage(dt, 0.5);
-        b.updateConstitutive();
+        ok = b.updateConstitutive() && ok;
     }
+    return ok;
 }
 
 

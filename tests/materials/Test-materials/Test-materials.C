@@ -36,6 +36,30 @@ void check(const bool ok, const string& what, const scalar value, const scalar t
 }
 
 
+// Energy and stresses with an independent (conserved) J, H = cof F
+scalar energyFJ(const materialModel& m, const tensor& F, const scalar J)
+{
+    List<tensor> Fl(1, F), Hl(1, cofactor(F));
+    List<scalar> Jl(1, J), W(1);
+    m.energy(Fl, Hl, Jl, W);
+    return W[0];
+}
+
+
+void stressFJ
+(
+    const materialModel& m, const tensor& F, const scalar J,
+    tensor& P, scalar& SigmaJ
+)
+{
+    List<tensor> Fl(1, F), Hl(1, cofactor(F)), Pl(1);
+    List<scalar> Jl(1, J), SJ(1);
+    m.stress(Fl, Hl, Jl, Pl, SJ);
+    P = Pl[0];
+    SigmaJ = SJ[0];
+}
+
+
 scalar totalEnergy(const materialModel& m, const tensor& F)
 {
     List<tensor> Fl(1, F), Hl(1, cofactor(F));
@@ -144,6 +168,42 @@ int main(int argc, char *argv[])
             {
                 check(err < 1e-6, "P = dW/dF (central differences)", err, 1e-6);
             }
+        }
+
+        // Independent J (J law): P = dW/dF|J + Sigma_J cof F and
+        // Sigma_J = dW/dJ, which makes the semi-discrete energy balance
+        // exact: (P - Sigma_J H):D + Sigma_J (H:D + RJ) = P:D + Sigma_J RJ
+        if (finiteStrain && !m.hugoniot())
+        {
+            scalar err = 0;
+            for (label k = 0; k < 20; ++k)
+            {
+                tensor F(I);
+                for (direction c = 0; c < 9; ++c) F[c] += 0.4*(rnd.sample01<scalar>() - 0.5);
+                const scalar J = det(F)*(0.8 + 0.4*rnd.sample01<scalar>());
+                tensor P;
+                scalar SJ;
+                stressFJ(m, F, J, P, SJ);
+                const scalar h = 1e-6;
+                tensor dW(Zero);
+                for (direction c = 0; c < 9; ++c)
+                {
+                    tensor Fp(F), Fm(F);
+                    Fp[c] += h; Fm[c] -= h;
+                    dW[c] = (energyFJ(m, Fp, J) - energyFJ(m, Fm, J))/(2*h);
+                }
+                const scalar dWdJ =
+                    (energyFJ(m, F, J + h) - energyFJ(m, F, J - h))/(2*h);
+                const scalar scale = max(mag(P), m.kappa()*1e-3);
+                err = max(err, mag(P - dW - SJ*cofactor(F))/scale);
+                err = max(err, mag(SJ - dWdJ)/scale);
+            }
+            check
+            (
+                err < 1e-6,
+                "J != det F: P = dW/dF|J + Sigma_J cof F, Sigma_J = dW/dJ",
+                err, 1e-6
+            );
         }
 
         // Objectivity

@@ -12,7 +12,9 @@ Description
 
     Bodies are the regions listed under 'solid' in constant/regionProperties,
     or the single mesh in constant/polyMesh when there is no such file.  Each
-    body is described by constant/<body>/solidProperties (see solidBody.H).
+    body is described by constant/<body>/solidProperties (see solidBody.H);
+    contact pairs between bodies by constant/contactProperties (see
+    contactPair.H).
     system/controlDict: endTime, writeControl (adjustableRunTime), and
         cfl     0.3;        // time step = cfl h_min / U_max
 
@@ -39,6 +41,7 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createBodies.H"
+    #include "createContacts.H"
 
     runStatistics stats(nPoints, tvdRungeKutta2::nStages);
     scalar nextReport = 0;
@@ -51,15 +54,15 @@ int main(int argc, char *argv[])
     {
         const scalar dt = min
         (
-            tvdRungeKutta2::stableDeltaT(bodies, cfl),
+            tvdRungeKutta2::stableDeltaT(bodies, contacts, cfl),
             endTime - runTime.value()
         );
         runTime.setDeltaT(dt);
         const scalar t0 = runTime.value();
         ++runTime;
 
-        const bool stepOk =
-            tvdRungeKutta2::step(bodies, t0, runTime.deltaTValue());
+        const label failed =
+            tvdRungeKutta2::step(bodies, contacts, t0, runTime.deltaTValue());
         stats.step();
 
         #include "checkState.H"
@@ -98,6 +101,11 @@ int main(int argc, char *argv[])
     }
 
     Info<< nl;
+    for (const contactPair& c : contacts)
+    {
+        Info<< "Contact " << c.name() << ": largest interpenetration "
+            << c.maxPenetration() << " of the local edge length" << nl;
+    }
     stats.report(Info);
     Info<< endl;
 

@@ -71,6 +71,7 @@ Foam::solidBoundaryConditions::rigidWall::rigidWall
 void Foam::solidBoundaryConditions::rigidWall::contactState
 (
     const vector& n,
+    const vector& N,
     const point& x,
     const vector& v,
     const vector& tL,

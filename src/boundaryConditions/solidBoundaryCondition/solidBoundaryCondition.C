@@ -71,7 +71,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     {
         vector n(H[k] & N);
         n /= mag(n);
-        contactState(n, x[k], v[k], P[k] & N, Zp, Zs, t, tC, vC);
+        contactState(n, N, x[k], v[k], P[k] & N, Zp, Zs, t, tC, vC);
     };
 
     forAll(sf.point, s)

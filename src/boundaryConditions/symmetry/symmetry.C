@@ -31,6 +31,7 @@ Foam::solidBoundaryConditions::symmetry::symmetry
 void Foam::solidBoundaryConditions::symmetry::contactState
 (
     const vector& n,
+    const vector& N,
     const point& x,
     const vector& v,
     const vector& tL,
@@ -41,7 +42,9 @@ void Foam::solidBoundaryConditions::symmetry::contactState
     vector& vC
 ) const
 {
-    acoustic::mixedState(tL, v, 0, Zero, n, Zp, Zs, tC, vC);
+    // The plane's own normal (the reference one): the deformed normal may
+    // tilt, and its normal reaction would then push along the plane
+    acoustic::mixedState(tL, v, 0, Zero, N, Zp, Zs, tC, vC);
 }
 
 

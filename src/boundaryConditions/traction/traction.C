@@ -41,6 +41,7 @@ Foam::solidBoundaryConditions::traction::traction
 void Foam::solidBoundaryConditions::traction::contactState
 (
     const vector& n,
+    const vector& N,
     const point& x,
     const vector& v,
     const vector& tL,

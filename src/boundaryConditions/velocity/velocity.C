@@ -33,6 +33,7 @@ Foam::solidBoundaryConditions::velocity::velocity
 void Foam::solidBoundaryConditions::velocity::contactState
 (
     const vector& n,
+    const vector& N,
     const point& x,
     const vector& v,
     const vector& tL,

@@ -313,7 +313,9 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     E0_(0),
     Dplastic_(0),
     dDplastic_(),
-    power_(0)
+    power_(0),
+    invalidPoint_(Zero),
+    invalidValue_(0)
 {
     // The dual mesh holds all the solver needs: free OpenFOAM's
     // demand-driven geometry and addressing (rebuilt on demand if needed)
@@ -358,6 +360,19 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
 Foam::label Foam::solidBody::nGlobalPoints() const
 {
     return label(dual_.sumPoints(scalarField(mesh_.nPoints(), 1.0)) + 0.5);
+}
+
+
+Foam::word Foam::solidBody::boundaryConditionType(const label patchi) const
+{
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        if (bc.patchi() == patchi)
+        {
+            return bc.type();
+        }
+    }
+    return word::null;
 }
 
 
@@ -410,22 +425,38 @@ bool Foam::solidBody::updateConstitutive()
     }
 
     // An inverted or collapsed volume (or NaN) must not reach the material
-    // (pow of a negative J); the time loop reports it
+    // (pow of a negative J or det F); the time loop reports it
     const List<scalar>& J = Jc();
-    bool ok = true;
+    const List<tensor>& H = Hc();
+    label bad = -1;
     forAll(J, i)
     {
-        if (!(J[i] > 0))
+        const scalar detF = (H[i] && F_[i])/3.0;
+        if (!(J[i] > 0) || !(detF > 0))
         {
-            ok = false;
+            bad = i;
+            invalidValue_ = (J[i] > 0) ? detF : J[i];
             break;
         }
     }
-    if (returnReduce(ok, andOp<bool>()))
+    if (returnReduce(bad < 0, andOp<bool>()))
     {
-        material_->stress(F_, Hc(), J, P_, SigmaJ_);
+        material_->stress(F_, H, J, P_, SigmaJ_);
         return true;
     }
+
+    // Report the first bad point of the lowest processor that has one
+    label proc = (bad >= 0) ? Pstream::myProcNo() : Pstream::nProcs();
+    reduce(proc, minOp<label>());
+    invalidPoint_ = Zero;
+    scalar value = 0;
+    if (proc == Pstream::myProcNo())
+    {
+        invalidPoint_ = mesh_.points()[bad];
+        value = invalidValue_;
+    }
+    reduce(invalidPoint_, sumOp<vector>());
+    invalidValue_ = returnReduce(value, sumOp<scalar>());
     return false;
 }
 
@@ -443,12 +474,20 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     const scalar Zs = material_->Zs();
     const scalar Sfactor = 0.5/Zp;
 
+    // Hugoniot materials: compressive jumps travel at the shock speed
+    // c + s Lambda [[v_n]] (method.md, homogeneous Hugoniot solver): the
+    // upwind impedance grows with the jump
+    const bool shock = material_->hugoniot();
+    const scalar rhoS = material_->rho()*material_->hugoniotS();
+
     Rp_ = Zero;
     D_ = Zero;
     if (JLaw_)
     {
         RJ_ = 0;
     }
+    surfacePoints_.clear();
+    surfaceVelocities_.clear();
 
     if (secondOrder_)
     {
@@ -506,9 +545,18 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         const vector hN(0.5*((H[i] & N) + (H[j] & N)));
         const vector n(hN/mag(hN));
 
+        scalar Zn = Zp;
+        if (shock)
+        {
+            const scalar closing = (vL - vR) & n;
+            if (closing > 0)
+            {
+                Zn += rhoS*mag(hN)*closing;
+            }
+        }
         const vector tC
         (
-            A*acoustic::stickTraction(PL & N, PR & N, vL, vR, n, Zp, Zs)
+            A*acoustic::stickTraction(PL & N, PR & N, vL, vR, n, Zn, Zs)
         );
         Rp_[i] += tC;
         Rp_[j] -= tC;
@@ -533,6 +581,11 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         power_ += bc.addFluxes(x_, v_, P_, H, Zp, Zs, t, Rp_, D_);
     }
 
+}
+
+
+void Foam::solidBody::finishResiduals()
+{
     dual_.syncPointResidual(Rp_);
     dual_.syncPointResidual(D_);
     if (JLaw_)
@@ -562,6 +615,14 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
     const List<tensor>& H = Hc();
     const scalar b = 1 - a;
 
+    // Points in closed contact: displacement from the contact velocity
+    List<vector> uSurface(surfacePoints_.size());
+    forAll(surfacePoints_, k)
+    {
+        const label i = surfacePoints_[k];
+        uSurface[k] = a*u0_[i] + b*(u_[i] + dt*surfaceVelocities_[k]);
+    }
+
     forAll(lm_, i)
     {
         const scalar invV = 1.0/V[i];
@@ -581,6 +642,11 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
         lm_[i] = a*lm0_[i] + b*(lm_[i] + dt*(invV*Rp_[i] + rhoB));
         u_[i] = a*u0_[i] + b*(u_[i] + dt*v_[i]);
         F_[i] = a*F0_[i] + b*(F_[i] + dt*Drate);
+    }
+
+    forAll(surfacePoints_, k)
+    {
+        u_[surfacePoints_[k]] = uSurface[k];
     }
 
     Wext_ = a*Wext0_ + b*(Wext_ + dt*power_);
@@ -607,40 +673,29 @@ Foam::scalar Foam::solidBody::maxWaveSpeed() const
     scalar U = material_->cp();
     if (material_->hugoniot())
     {
+        // Shock speed c + s |v|, and the tangent (characteristic) speed of
+        // the most compressed point, which the shock speed does not bound
+        // once the body has slowed down
         scalar vMax = 0;
         forAll(v_, i)
         {
             vMax = max(vMax, mag(v_[i]));
         }
+        const List<scalar>& J = Jc();
+        scalar Jmin = 1;
+        forAll(J, i)
+        {
+            Jmin = min(Jmin, J[i]);
+        }
         reduce(vMax, maxOp<scalar>());
-        U += material_->hugoniotS()*vMax;
+        reduce(Jmin, minOp<scalar>());
+        U = max
+        (
+            U + material_->hugoniotS()*vMax,
+            material_->tangentWaveSpeed(Jmin)
+        );
     }
     return U;
-}
-
-
-Foam::scalar Foam::solidBody::minJ(point& where) const
-{
-    const List<scalar>& J = Jc();
-    scalar Jmin = GREAT;
-    label imin = -1;
-    forAll(J, i)
-    {
-        if (J[i] < Jmin || J[i] != J[i])
-        {
-            Jmin = J[i];
-            imin = i;
-            if (J[i] != J[i]) break;
-        }
-    }
-    where = (imin >= 0) ? mesh_.points()[imin] : point::max;
-    scalar globalMin = returnReduce(Jmin, minOp<scalar>());
-    if (Jmin != globalMin)
-    {
-        where = point::max;
-    }
-    reduce(where, minOp<point>());
-    return globalMin;
 }
 
 
@@ -702,7 +757,9 @@ Foam::label Foam::solidBody::findPoint(const point& X) const
 
 Foam::symmTensor Foam::solidBody::cauchyStress(const label i) const
 {
-    return symm(P_[i] & F_[i].T())/Jc()[i];
+    // Push-forward with det F (= H:F/3), consistent with the F it uses;
+    // with the J law J may differ slightly from det F
+    return symm(P_[i] & F_[i].T())/((Hc()[i] && F_[i])/3.0);
 }
 
 

@@ -8,6 +8,7 @@
 Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
 (
     const PtrList<solidBody>& bodies,
+    const PtrList<contactPair>& contacts,
     const scalar cfl
 )
 {
@@ -17,42 +18,74 @@ Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
         hMin = min(hMin, b.minLength());
         UMax = max(UMax, b.maxWaveSpeed());
     }
-    return cfl*hMin/UMax;
+    scalar dt = cfl*hMin/UMax;
+    for (const contactPair& c : contacts)
+    {
+        dt = min(dt, c.deltaTLimit());
+    }
+    return dt;
 }
 
 
-bool Foam::tvdRungeKutta2::step
+namespace
+{
+
+// Residuals of all bodies including contact fluxes, at time t
+void residuals
+(
+    Foam::PtrList<Foam::solidBody>& bodies,
+    Foam::PtrList<Foam::contactPair>& contacts,
+    const Foam::scalar t
+)
+{
+    for (Foam::solidBody& b : bodies)
+    {
+        b.assembleResiduals(t);
+    }
+    for (Foam::contactPair& c : contacts)
+    {
+        c.addFluxes();
+    }
+    for (Foam::solidBody& b : bodies)
+    {
+        b.finishResiduals();
+    }
+}
+
+} // End anonymous namespace
+
+
+Foam::label Foam::tvdRungeKutta2::step
 (
     PtrList<solidBody>& bodies,
+    PtrList<contactPair>& contacts,
     const scalar t,
     const scalar dt
 )
 {
-    bool ok = true;
     for (solidBody& b : bodies)
     {
         b.storeState();
-        b.assembleResiduals(t);
     }
-    for (solidBody& b : bodies)
+    residuals(bodies, contacts, t);
+    forAll(bodies, b)
     {
-        b.rkStage(dt, 0);
-        ok = b.updateConstitutive() && ok;
+        bodies[b].rkStage(dt, 0);
+        if (!bodies[b].updateConstitutive())
+        {
+            return b;
+        }
     }
-    if (!ok)
+    residuals(bodies, contacts, t + dt);
+    forAll(bodies, b)
     {
-        return false;
+        bodies[b].rkStage(dt, 0.5);
+        if (!bodies[b].updateConstitutive())
+        {
+            return b;
+        }
     }
-    for (solidBody& b : bodies)
-    {
-        b.assembleResiduals(t + dt);
-    }
-    for (solidBody& b : bodies)
-    {
-        b.rkStage(dt, 0.5);
-        ok = b.updateConstitutive() && ok;
-    }
-    return ok;
+    return -1;
 }
 
 

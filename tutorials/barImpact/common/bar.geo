@@ -1,11 +1,12 @@
 // One bar of the bar-impact benchmarks (benchmarks.md, part A): a box
 // [x0, x0+L] x [-W/2, W/2]^2 of structured tetrahedra (each hex cell split in
-// six), nx cells along the bar and ny across.  Patches:
+// six; hex = 1: hexahedra), nx cells along the bar and ny across.  Patches:
 //   contact  the end facing the other bar (contactEnd = 1: at x0+L, else x0)
 //   end      the other end
 //   sides    the four lateral faces
 // Set parameters with  gmsh -setnumber nx 160 ...
-DefineConstant[ x0 = 0, L = 10, W = 1, nx = 80, ny = 2, contactEnd = 1 ];
+DefineConstant[ x0 = 0, L = 10, W = 1, nx = 80, ny = 2, contactEnd = 1,
+                hex = 0 ];
 
 SetFactory("OpenCASCADE");
 Box(1) = {x0, -W/2, -W/2, L, W, W};
@@ -21,6 +22,10 @@ For i In {0 : #curves[] - 1}
 EndFor
 Transfinite Surface{:};
 Transfinite Volume{1};
+If (hex == 1)
+    Recombine Surface{:};
+    Recombine Volume{1};
+EndIf
 
 // OpenCASCADE box faces: 1 x = x0, 2 x = x0 + L, 3-6 the sides
 If (contactEnd == 1)

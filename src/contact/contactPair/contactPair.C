@@ -1,0 +1,563 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "contactPair.H"
+#include "acousticFormulas.H"
+#include "ListListOps.H"
+
+// * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+// Point data layout: x(0-2) v(3-5) t = P N (6-8) n spatial normal (9-11)
+// Lambda = |H N| (12) edge length (13)
+inline vector dataVec(const contactPair::pointData& d, const label o)
+{
+    return vector(d[o], d[o + 1], d[o + 2]);
+}
+
+template<class T>
+List<T> allGather(const List<T>& local)
+{
+    List<List<T>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = local;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    return ListListOps::combine<List<T>>(all, accessOp<List<T>>());
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::contactPair::setSide
+(
+    contactSide& side,
+    solidBody& body,
+    const word& patchName
+)
+{
+    const polyMesh& mesh = body.mesh();
+    side.body = &body;
+    side.patchi = mesh.boundaryMesh().findPatchID(patchName);
+
+    if (side.patchi < 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Contact pair '" << name_ << "': body '" << body.name()
+            << "' has no patch '" << patchName << "'" << nl
+            << "Patches: " << flatOutput(mesh.boundaryMesh().names())
+            << exit(FatalIOError);
+    }
+    if (body.boundaryConditionType(side.patchi) != "contact")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Contact pair '" << name_ << "': patch '" << patchName
+            << "' of body '" << body.name() << "' has boundary condition "
+            << body.boundaryConditionType(side.patchi)
+            << "; give it { type contact; } in its solidProperties"
+            << exit(FatalIOError);
+    }
+
+    const polyPatch& pp = mesh.boundaryMesh()[side.patchi];
+    side.points = pp.meshPoints();
+    const Map<label>& local = pp.meshPointMap();
+
+    const dualMesh::patchSubFaces& sf = body.dual().subFaces(side.patchi);
+    side.N.setSize(side.points.size(), Zero);
+    side.sfLocal.setSize(sf.size());
+    side.sfPrev.setSize(sf.size());
+    side.sfNext.setSize(sf.size());
+    forAll(sf.point, s)
+    {
+        side.sfLocal[s] = local[sf.point[s]];
+        side.sfPrev[s] = local[sf.prev[s]];
+        side.sfNext[s] = local[sf.next[s]];
+        side.N[side.sfLocal[s]] += sf.area[s];
+    }
+    side.N /= mag(side.N);
+
+    side.length.setSize(side.points.size());
+    forAll(side.points, i)
+    {
+        side.length[i] = body.dual().lengths()[side.points[i]];
+    }
+    side.tC.setSize(side.points.size(), Zero);
+    side.vC.setSize(side.points.size(), Zero);
+    side.force.setSize(side.points.size(), Zero);
+}
+
+
+void Foam::contactPair::matchSides()
+{
+    const pointField& XA = A_.body->mesh().points();
+    const pointField& XB = B_.body->mesh().points();
+
+    const pointField globalA(allGather(pointField(XA, A_.points)));
+    const pointField globalB(allGather(pointField(XB, B_.points)));
+    const vectorField globalNA(allGather(A_.N));
+
+    // Partner: the point of the other side at the same tangential position
+    // (relative to A's normal), i.e. across the gap
+    auto match = [&]
+    (
+        const pointField& from,
+        const vectorField& fromN,
+        const scalarField& len,
+        const pointField& to,
+        labelList& partner,
+        const word& fromBody
+    )
+    {
+        partner.setSize(from.size());
+        forAll(from, i)
+        {
+            scalar best = GREAT;
+            label ibest = -1;
+            forAll(to, j)
+            {
+                const vector d(to[j] - from[i]);
+                const scalar dt = mag(d - (d & fromN[i])*fromN[i]);
+                if (dt < best)
+                {
+                    best = dt;
+                    ibest = j;
+                }
+            }
+            if (ibest < 0 || best > 1e-6*len[i])
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "Contact pair '" << name_ << "': the patches do not"
+                    << " match. The point of body " << fromBody << " at "
+                    << from[i] << " has no partner on the other patch"
+                    << " (nearest tangential distance " << best << ")."
+                    << nl << "Matching (conforming) contact meshes are"
+                    << " needed: mesh both patches with the same surface"
+                    << " mesh." << exit(FatalIOError);
+            }
+            partner[i] = ibest;
+        }
+    };
+
+    // All copies of each partner point (a point shared by processors
+    // appears once per processor in the gathered lists)
+    auto copies = [&](const labelList& partner, const pointField& to)
+    {
+        labelListList result(partner.size());
+        forAll(partner, i)
+        {
+            const point& p = to[partner[i]];
+            forAll(to, j)
+            {
+                if (to[j] == p)
+                {
+                    result[i].append(j);
+                }
+            }
+        }
+        return result;
+    };
+
+    // A's points look along their own normal; B's along the normal of the
+    // nearest A point (A's normal defines the contact direction)
+    match
+    (
+        pointField(XA, A_.points), A_.N, A_.length, globalB, A_.partner,
+        A_.body->name()
+    );
+
+    vectorField NB(B_.points.size());
+    forAll(B_.points, i)
+    {
+        label ibest = 0;
+        scalar best = GREAT;
+        forAll(globalA, j)
+        {
+            const scalar d = magSqr(globalA[j] - XB[B_.points[i]]);
+            if (d < best)
+            {
+                best = d;
+                ibest = j;
+            }
+        }
+        NB[i] = globalNA[ibest];
+    }
+    match
+    (
+        pointField(XB, B_.points), NB, B_.length, globalA, B_.partner,
+        B_.body->name()
+    );
+    B_.partners = copies(B_.partner, globalA);
+}
+
+
+Foam::List<Foam::contactPair::pointData> Foam::contactPair::gatherData
+(
+    const contactSide& side
+) const
+{
+    const solidBody& body = *side.body;
+    const List<point>& x = body.x();
+    const List<vector>& v = body.v();
+    const List<tensor>& P = body.P();
+    const List<tensor>& H = body.Hc();
+
+    List<pointData> local(side.points.size());
+    forAll(side.points, i)
+    {
+        const label p = side.points[i];
+        const vector& N = side.N[i];
+        const vector t(P[p] & N);
+        const vector hN(H[p] & N);
+        const scalar Lambda = mag(hN);
+        const vector n(hN/Lambda);
+        pointData& d = local[i];
+        for (direction c = 0; c < 3; ++c)
+        {
+            d[c] = x[p][c];
+            d[3 + c] = v[p][c];
+            d[6 + c] = t[c];
+            d[9 + c] = n[c];
+        }
+        d[12] = Lambda;
+        d[13] = side.length[i];
+    }
+    return allGather(local);
+}
+
+
+bool Foam::contactPair::pairState
+(
+    const pointData& a,
+    const pointData& b,
+    vector& tC,
+    vector& vCA,
+    vector& vCB
+) const
+{
+    const materialModel& mA = A_.body->material();
+    const materialModel& mB = B_.body->material();
+
+    const vector xA(dataVec(a, 0)), xB(dataVec(b, 0));
+    const vector vA(dataVec(a, 3)), vB(dataVec(b, 3));
+    const vector tA(dataVec(a, 6)), tBown(dataVec(b, 6));
+    const vector n(dataVec(a, 9)), nBown(dataVec(b, 9));
+
+    // Open gap or (below) tension: both sides traction-free
+    auto separate = [&]()
+    {
+        tC = Zero;
+        vCA = acoustic::tractionVelocity(tA, vA, Zero, n, mA.Zp(), mA.Zs());
+        vCB = acoustic::tractionVelocity
+        (
+            tBown, vB, Zero, nBown, mB.Zp(), mB.Zs()
+        );
+        return false;
+    };
+
+    const scalar gap = (xB - xA) & n;
+    if (gap > gapTolerance*a[13])
+    {
+        return separate();
+    }
+
+    // Traction of B measured with A's normal: t^R = -P^B N^B
+    const vector tB(-tBown);
+
+    contactRiemannSolver::side L{tA & n, vA & n, mA.rho(), mA.cp(), a[12]};
+    contactRiemannSolver::side R{tB & n, vB & n, mB.rho(), mB.cp(), b[12]};
+    scalar vnC, tnC;
+    riemann_->normalState(L, R, vnC, tnC);
+
+    if (tnC >= 0)
+    {
+        return separate();
+    }
+
+    // Tangential (acoustic)
+    const vector tAt(tA - (tA & n)*n), tBt(tB - (tB & n)*n);
+    const vector vAt(vA - (vA & n)*n), vBt(vB - (vB & n)*n);
+    const scalar ZA = mA.Zs(), ZB = mB.Zs();
+
+    vector ttC(Zero), vtA(vAt), vtB(vBt);
+    const bool shear = (ZA > VSMALL && ZB > VSMALL);
+
+    // One-sided tangential velocities for a given tangential traction
+    auto slipWith = [&](const vector& tt)
+    {
+        ttC = tt;
+        if (ZA > VSMALL) vtA = vAt - (tAt - tt)/ZA;
+        if (ZB > VSMALL) vtB = vBt + (tBt - tt)/ZB;
+    };
+
+    if (friction_ == frictionModel::frictionless || !shear)
+    {
+        slipWith(Zero);
+    }
+    else
+    {
+        const vector vtStick((ZA*vAt + ZB*vBt + tBt - tAt)/(ZA + ZB));
+        const vector ttStick
+        (
+            (ZA*ZB/(ZA + ZB))*(tAt/ZA + tBt/ZB + vBt - vAt)
+        );
+        const scalar limit = -k_*tnC;
+        if
+        (
+            friction_ == frictionModel::stick
+         || mag(ttStick) <= limit
+        )
+        {
+            ttC = ttStick;
+            vtA = vtStick;
+            vtB = vtStick;
+        }
+        else
+        {
+            slipWith((limit/mag(ttStick))*ttStick);
+        }
+    }
+
+    tC = tnC*n + ttC;
+    vCA = vnC*n + vtA;
+    vCB = vnC*n + vtB;
+    return true;
+}
+
+
+Foam::scalar Foam::contactPair::addSideFluxes
+(
+    contactSide& side,
+    const bool tractions
+)
+{
+    solidBody& body = *side.body;
+    const dualMesh::patchSubFaces& sf = body.dual().subFaces(side.patchi);
+    List<vector>& Rp = body.momentumResidual();
+    List<tensor>& D = body.deformationResidual();
+
+    side.force = Zero;
+    scalar power = 0;
+    forAll(sf.point, s)
+    {
+        const label i = side.sfLocal[s];
+        const label ip = side.sfPrev[s];
+        const label in = side.sfNext[s];
+        const scalar w = sf.nbrWeight[s];
+        const vector tC((1 - 2*w)*side.tC[i] + w*(side.tC[ip] + side.tC[in]));
+        const vector vC((1 - 2*w)*side.vC[i] + w*(side.vC[ip] + side.vC[in]));
+        const scalar magA = mag(sf.area[s]);
+
+        side.force[i] += magA*tC;
+        D[sf.point[s]] += vC*sf.area[s];
+        power += magA*(tC & vC);
+    }
+    if (tractions)
+    {
+        forAll(side.points, i)
+        {
+            Rp[side.points[i]] += side.force[i];
+        }
+    }
+    return power;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactPair::contactPair
+(
+    const word& name,
+    const dictionary& dict,
+    PtrList<solidBody>& bodies
+)
+:
+    name_(name),
+    dict_(dict),
+    riemann_(contactRiemannSolver::New(dict)),
+    friction_(frictionModel::frictionless),
+    k_(0),
+    maxPenetration_(0),
+    nClosed_(0)
+{
+    auto findBody = [&](const word& key) -> solidBody&
+    {
+        const word bodyName(dict.get<word>(key));
+        wordList names;
+        for (solidBody& b : bodies)
+        {
+            if (b.name() == bodyName)
+            {
+                return b;
+            }
+            names.append(b.name());
+        }
+        FatalIOErrorInFunction(dict)
+            << "Contact pair '" << name << "': keyword '" << key
+            << "' names body '" << bodyName << "', which does not exist"
+            << nl << "Bodies: " << flatOutput(names) << exit(FatalIOError);
+        return bodies[0];
+    };
+
+    solidBody& bodyA = findBody("bodyA");
+    solidBody& bodyB = findBody("bodyB");
+    setSide(A_, bodyA, dict.get<word>("patchA"));
+    setSide(B_, bodyB, dict.get<word>("patchB"));
+
+    if (dict.found("friction"))
+    {
+        ITstream& is = dict.lookup("friction");
+        const token tok(is);
+        if (tok.isWord() && tok.wordToken() == "frictionless")
+        {
+            friction_ = frictionModel::frictionless;
+        }
+        else if (tok.isWord() && tok.wordToken() == "stick")
+        {
+            friction_ = frictionModel::stick;
+        }
+        else if (tok.isNumber() && tok.number() >= 0)
+        {
+            k_ = tok.number();
+            friction_ =
+                (k_ > 0) ? frictionModel::coulomb : frictionModel::frictionless;
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'friction' of contact pair '" << name << "' is "
+                << tok << "; allowed: frictionless, stick, or a Coulomb"
+                << " coefficient >= 0" << exit(FatalIOError);
+        }
+    }
+
+    matchSides();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactPair::addFluxes()
+{
+    dataA_ = gatherData(A_);
+    dataB_ = gatherData(B_);
+
+    const label offsetA = localOffset(A_.points.size());
+    const label offsetB = localOffset(B_.points.size());
+
+    nClosed_ = 0;
+    vector vOther;
+    forAll(A_.points, i)
+    {
+        const pointData& a = dataA_[offsetA + i];
+        const pointData& b = dataB_[A_.partner[i]];
+        if (pairState(a, b, A_.tC[i], A_.vC[i], vOther))
+        {
+            ++nClosed_;
+            A_.body->setSurfaceVelocity(A_.points[i], A_.vC[i]);
+            const scalar pen =
+                -((dataVec(b, 0) - dataVec(a, 0)) & dataVec(a, 9));
+            maxPenetration_ = max(maxPenetration_, pen/a[13]);
+        }
+    }
+    forAll(B_.points, i)
+    {
+        const pointData& b = dataB_[offsetB + i];
+        const pointData& a = dataA_[B_.partner[i]];
+        vector tC;
+        if (pairState(a, b, tC, vOther, B_.vC[i]))
+        {
+            B_.body->setSurfaceVelocity(B_.points[i], B_.vC[i]);
+        }
+        B_.tC[i] = -tC;
+    }
+    reduce(nClosed_, sumOp<label>());
+    reduce(maxPenetration_, maxOp<scalar>());
+
+    // A: its own integrated tractions.  B: minus the forces of its
+    // partners on A (summed over the processor copies of a partner, shared
+    // by B's processor copies of the point through the point weights)
+    A_.body->addContactPower(addSideFluxes(A_, true));
+    B_.body->addContactPower(addSideFluxes(B_, false));
+
+    const vectorField forceA(allGather(A_.force));
+    List<vector>& RpB = B_.body->momentumResidual();
+    const scalarField& wB = B_.body->dual().pointWeights();
+    forAll(B_.points, i)
+    {
+        vector F(Zero);
+        for (const label k : B_.partners[i])
+        {
+            F -= forceA[k];
+        }
+        RpB[B_.points[i]] += wB[B_.points[i]]*F;
+    }
+}
+
+
+Foam::label Foam::contactPair::localOffset(const label localSize)
+{
+    labelList sizes(Pstream::nProcs(), 0);
+    sizes[Pstream::myProcNo()] = localSize;
+    Pstream::listCombineGather(sizes, plusEqOp<label>());
+    Pstream::listCombineScatter(sizes);
+    label offset = 0;
+    for (label p = 0; p < Pstream::myProcNo(); ++p)
+    {
+        offset += sizes[p];
+    }
+    return offset;
+}
+
+
+Foam::scalar Foam::contactPair::deltaTLimit() const
+{
+    const List<pointData> a(gatherData(A_));
+    const List<pointData> b(gatherData(B_));
+    const label offsetA = localOffset(A_.points.size());
+
+    scalar dt = GREAT;
+    forAll(A_.points, i)
+    {
+        const pointData& da = a[offsetA + i];
+        const pointData& db = b[A_.partner[i]];
+        const vector n(dataVec(da, 9));
+        const scalar gap = (dataVec(db, 0) - dataVec(da, 0)) & n;
+        const scalar closing = (dataVec(da, 3) - dataVec(db, 3)) & n;
+        if (gap > gapTolerance*da[13] && closing > 0)
+        {
+            dt = min(dt, gap/closing);
+        }
+    }
+    reduce(dt, minOp<scalar>());
+    return dt;
+}
+
+
+void Foam::contactPair::describe(Ostream& os) const
+{
+    os  << "Contact " << name_ << ": " << A_.body->name() << "/"
+        << A_.body->mesh().boundaryMesh()[A_.patchi].name() << " - "
+        << B_.body->name() << "/"
+        << B_.body->mesh().boundaryMesh()[B_.patchi].name()
+        << ", " << returnReduce(A_.points.size(), sumOp<label>())
+        << " point pairs, Riemann solver ";
+    riemann_->describe(os);
+    os  << ", friction ";
+    switch (friction_)
+    {
+        case frictionModel::frictionless: os << "frictionless"; break;
+        case frictionModel::stick: os << "stick"; break;
+        case frictionModel::coulomb: os << "Coulomb k = " << k_; break;
+    }
+    os  << nl;
+}
+
+
+// ************************************************************************* //

@@ -28,8 +28,7 @@ Foam::solidBoundaryConditions::rigidWall::rigidWall
     point_(dict.get<point>("point")),
     normal_(dict.get<vector>("normal")),
     velocity_(dict.getOrDefault<vector>("velocity", Zero)),
-    friction_(frictionModel::frictionless),
-    k_(0)
+    friction_(dict, "patch '" + patchName() + "'")
 {
     if (mag(normal_) < SMALL)
     {
@@ -38,33 +37,6 @@ Foam::solidBoundaryConditions::rigidWall::rigidWall
             << "' must be a non-zero vector" << exit(FatalIOError);
     }
     normal_ /= mag(normal_);
-
-    if (dict.found("friction"))
-    {
-        ITstream& is = dict.lookup("friction");
-        const token tok(is);
-        if (tok.isWord() && tok.wordToken() == "frictionless")
-        {
-            friction_ = frictionModel::frictionless;
-        }
-        else if (tok.isWord() && tok.wordToken() == "stick")
-        {
-            friction_ = frictionModel::stick;
-        }
-        else if (tok.isNumber() && tok.number() >= 0)
-        {
-            k_ = tok.number();
-            friction_ =
-                (k_ > 0) ? frictionModel::coulomb : frictionModel::frictionless;
-        }
-        else
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword 'friction' of patch '" << patchName()
-                << "' is " << tok << "; allowed: frictionless, stick, or a"
-                << " Coulomb coefficient >= 0" << exit(FatalIOError);
-        }
-    }
 }
 
 
@@ -98,25 +70,25 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
         return;
     }
 
-    switch (friction_)
+    switch (friction_.type())
     {
-        case frictionModel::frictionless:
+        case frictionLaw::model::frictionless:
         {
             acoustic::mixedState(tL, v, vWallN, Zero, nc, Zp, Zs, tC, vC);
             break;
         }
-        case frictionModel::stick:
+        case frictionLaw::model::stick:
         {
             vC = velocity_;
             tC = acoustic::velocityTraction(tL, v, vC, nc, Zp, Zs);
             break;
         }
-        case frictionModel::coulomb:
+        case frictionLaw::model::coulomb:
         {
             // Trial stick; slip when the tangential traction exceeds k |t_n|
             tC = acoustic::velocityTraction(tL, v, velocity_, nc, Zp, Zs);
             const vector tt(acoustic::tangential(tC, nc));
-            const scalar limit = -k_*tnTrial;
+            const scalar limit = -friction_.coefficient()*tnTrial;
             if (mag(tt) <= limit)
             {
                 vC = velocity_;
@@ -138,12 +110,7 @@ void Foam::solidBoundaryConditions::rigidWall::describe(Ostream& os) const
 {
     os  << "rigid wall at " << point_ << ", normal " << normal_
         << ", velocity " << velocity_ << ", friction ";
-    switch (friction_)
-    {
-        case frictionModel::frictionless: os << "frictionless"; break;
-        case frictionModel::stick: os << "stick"; break;
-        case frictionModel::coulomb: os << "Coulomb k = " << k_; break;
-    }
+    friction_.describe(os);
 }
 
 

@@ -91,6 +91,7 @@ void Foam::contactPair::setSide
     side.tC.setSize(side.points.size(), Zero);
     side.vC.setSize(side.points.size(), Zero);
     side.force.setSize(side.points.size(), Zero);
+    side.closed.setSize(side.points.size(), false);
 }
 
 
@@ -234,6 +235,7 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::gatherData
 
 bool Foam::contactPair::pairState
 (
+    const bool closed,
     const pointData& a,
     const pointData& b,
     vector& tC,
@@ -261,8 +263,7 @@ bool Foam::contactPair::pairState
         return false;
     };
 
-    const scalar gap = (xB - xA) & n;
-    if (gap > gapTolerance*a[13])
+    if (!closed)
     {
         return separate();
     }
@@ -296,7 +297,7 @@ bool Foam::contactPair::pairState
         if (ZB > VSMALL) vtB = vBt + (tBt - tt)/ZB;
     };
 
-    if (friction_ == frictionModel::frictionless || !shear)
+    if (friction_.type() == frictionLaw::model::frictionless || !shear)
     {
         slipWith(Zero);
     }
@@ -307,10 +308,10 @@ bool Foam::contactPair::pairState
         (
             (ZA*ZB/(ZA + ZB))*(tAt/ZA + tBt/ZB + vBt - vAt)
         );
-        const scalar limit = -k_*tnC;
+        const scalar limit = -friction_.coefficient()*tnC;
         if
         (
-            friction_ == frictionModel::stick
+            friction_.type() == frictionLaw::model::stick
          || mag(ttStick) <= limit
         )
         {
@@ -381,8 +382,7 @@ Foam::contactPair::contactPair
     name_(name),
     dict_(dict),
     riemann_(contactRiemannSolver::New(dict)),
-    friction_(frictionModel::frictionless),
-    k_(0),
+    friction_(dict, "contact pair '" + name + "'"),
     maxPenetration_(0),
     nClosed_(0)
 {
@@ -410,33 +410,6 @@ Foam::contactPair::contactPair
     setSide(A_, bodyA, dict.get<word>("patchA"));
     setSide(B_, bodyB, dict.get<word>("patchB"));
 
-    if (dict.found("friction"))
-    {
-        ITstream& is = dict.lookup("friction");
-        const token tok(is);
-        if (tok.isWord() && tok.wordToken() == "frictionless")
-        {
-            friction_ = frictionModel::frictionless;
-        }
-        else if (tok.isWord() && tok.wordToken() == "stick")
-        {
-            friction_ = frictionModel::stick;
-        }
-        else if (tok.isNumber() && tok.number() >= 0)
-        {
-            k_ = tok.number();
-            friction_ =
-                (k_ > 0) ? frictionModel::coulomb : frictionModel::frictionless;
-        }
-        else
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword 'friction' of contact pair '" << name << "' is "
-                << tok << "; allowed: frictionless, stick, or a Coulomb"
-                << " coefficient >= 0" << exit(FatalIOError);
-        }
-    }
-
     matchSides();
 }
 
@@ -457,7 +430,7 @@ void Foam::contactPair::addFluxes()
     {
         const pointData& a = dataA_[offsetA + i];
         const pointData& b = dataB_[A_.partner[i]];
-        if (pairState(a, b, A_.tC[i], A_.vC[i], vOther))
+        if (pairState(A_.closed[i], a, b, A_.tC[i], A_.vC[i], vOther))
         {
             ++nClosed_;
             A_.body->setSurfaceVelocity(A_.points[i], A_.vC[i]);
@@ -471,7 +444,7 @@ void Foam::contactPair::addFluxes()
         const pointData& b = dataB_[offsetB + i];
         const pointData& a = dataA_[B_.partner[i]];
         vector tC;
-        if (pairState(a, b, tC, vOther, B_.vC[i]))
+        if (pairState(B_.closed[i], a, b, tC, vOther, B_.vC[i]))
         {
             B_.body->setSurfaceVelocity(B_.points[i], B_.vC[i]);
         }
@@ -497,6 +470,30 @@ void Foam::contactPair::addFluxes()
             F -= forceA[k];
         }
         RpB[B_.points[i]] += wB[B_.points[i]]*F;
+    }
+}
+
+
+void Foam::contactPair::startStep()
+{
+    const List<pointData> a(gatherData(A_));
+    const List<pointData> b(gatherData(B_));
+    const label offsetA = localOffset(A_.points.size());
+
+    // A's points against their partners; B's take their partner's flag
+    scalarField closedA(A_.points.size(), 0.0);
+    forAll(A_.points, i)
+    {
+        const pointData& da = a[offsetA + i];
+        const pointData& db = b[A_.partner[i]];
+        const scalar gap = (dataVec(db, 0) - dataVec(da, 0)) & dataVec(da, 9);
+        A_.closed[i] = (gap <= gapTolerance*da[13]);
+        closedA[i] = A_.closed[i];
+    }
+    const scalarField globalClosedA(allGather(closedA));
+    forAll(B_.points, i)
+    {
+        B_.closed[i] = (globalClosedA[B_.partner[i]] > 0.5);
     }
 }
 
@@ -550,12 +547,7 @@ void Foam::contactPair::describe(Ostream& os) const
         << " point pairs, Riemann solver ";
     riemann_->describe(os);
     os  << ", friction ";
-    switch (friction_)
-    {
-        case frictionModel::frictionless: os << "frictionless"; break;
-        case frictionModel::stick: os << "stick"; break;
-        case frictionModel::coulomb: os << "Coulomb k = " << k_; break;
-    }
+    friction_.describe(os);
     os  << nl;
 }
 

@@ -9,6 +9,7 @@
 #include "emptyPolyPatch.H"
 #include "tensorCross.H"
 #include "acousticFormulas.H"
+#include "greenGauss.H"
 
 // * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
 
@@ -204,71 +205,6 @@ void Foam::solidBody::readBookkeeping()
     else
     {
         E0_ = kineticEnergy() + strainEnergy();
-    }
-}
-
-
-void Foam::solidBody::computeGradients()
-{
-    const labelList& es = dual_.edgeStart();
-    const labelList& ee = dual_.edgeEnd();
-    const vectorField& Ne = dual_.edgeNormals();
-    const scalarField& Ae = dual_.edgeMagSf();
-    const scalarField& V = dual_.volumes();
-
-    fluxStateGradient zero;
-    zero = vector::zero;
-    G_ = zero;
-
-    forAll(es, e)
-    {
-        const label i = es[e], j = ee[e];
-        const vector C(0.5*Ae[e]*Ne[e]);
-        const fluxState& qi = q_[i];
-        const fluxState& qj = q_[j];
-        fluxStateGradient& Gi = G_[i];
-        fluxStateGradient& Gj = G_[j];
-        for (direction c = 0; c < nFluxComponents; ++c)
-        {
-            const vector flux((qi[c] + qj[c])*C);
-            Gi[c] += flux;
-            Gj[c] -= flux;
-        }
-    }
-
-    for (const solidBoundaryCondition& bc : bcs_)
-    {
-        const dualMesh::patchSubFaces& sf = dual_.subFaces(bc.patchi());
-        forAll(sf.point, s)
-        {
-            const label i = sf.point[s];
-            const scalar w = sf.nbrWeight[s];
-            const fluxState& qi = q_[i];
-            const fluxState& qp = q_[sf.prev[s]];
-            const fluxState& qn = q_[sf.next[s]];
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                G_[i][c] +=
-                    (qi[c] + w*(qp[c] + qn[c] - 2*qi[c]))*sf.area[s];
-            }
-        }
-    }
-
-    if (Pstream::parRun())
-    {
-        syncTools::syncPointList
-        (
-            mesh_, G_, componentPlusEqOp<fluxStateGradient>(), zero
-        );
-    }
-
-    forAll(G_, i)
-    {
-        const scalar invV = 1.0/V[i];
-        for (direction c = 0; c < nFluxComponents; ++c)
-        {
-            G_[i][c] *= invV;
-        }
     }
 }
 
@@ -495,7 +431,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         {
             packFluxState(v_[i], P_[i], SigmaJ_[i], q_[i]);
         }
-        computeGradients();
+        greenGaussGradient(dual_, q_, G_);
         limiter_->limit(dual_, q_, G_, phi_);
     }
 

@@ -67,6 +67,10 @@ Foam::label Foam::tvdRungeKutta2::step
     {
         b.storeState();
     }
+    for (contactPair& c : contacts)
+    {
+        c.startStep();
+    }
     residuals(bodies, contacts, t);
     forAll(bodies, b)
     {

@@ -1,0 +1,142 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+-------------------------------------------------------------------------------
+Application
+    Test-riemannSolvers
+
+Description
+    Riemann and boundary formulas against hand-computed cases
+    (method.md, section 3):
+      - acoustic contact stick between different impedances (normal and
+        tangential), its symmetric (homogeneous) limit;
+      - the Hugoniot check: two identical bars, c = 100, rho0 = 0.01,
+        v0 = 100, s = 1: v^C = 50, t_n^C = -75; s -> 0 gives the acoustic
+        answer; an expansive jump uses the acoustic solver;
+      - one-sided formulas: prescribed traction (free surface), prescribed
+        velocity (rigid), symmetry (mixed), frictionless slip, Coulomb
+        stick and slip on a rigid wall.
+    Exits non-zero if a check fails.
+
+\*---------------------------------------------------------------------------*/
+
+#include "acousticFormulas.H"
+#include "acoustic.H"
+#include "hugoniot.H"
+#include "IStringStream.H"
+
+using namespace Foam;
+
+label nFailed = 0;
+
+void check(const string& what, const scalar value, const scalar exact)
+{
+    const scalar err = mag(value - exact)/max(mag(exact), scalar(1));
+    const bool ok = err < 1e-12;
+    Info<< "    " << (ok ? "PASS " : "FAIL ") << what.c_str() << ": " << value
+        << " (exact " << exact << ")" << endl;
+    if (!ok) ++nFailed;
+}
+
+
+int main(int argc, char *argv[])
+{
+    typedef contactRiemannSolver::side side;
+
+    Info<< "Acoustic contact stick, Z_L = 2, Z_R = 3" << endl;
+    {
+        // L: rho 1, c 2, v 5, t -1;  R: rho 1, c 3, v 1, t -2
+        side L{-1, 5, 1, 2, 1}, R{-2, 1, 1, 3, 1};
+        scalar v, t;
+        contactRiemannSolvers::acoustic::solve(L, R, v, t);
+        // v = (2*5 + 3*1 + (-2) - (-1))/5 = 12/5; t = 6/5 (-1/2 - 2/3 + 1 - 5)
+        check("v_n^C", v, 12.0/5.0);
+        check("t_n^C", t, 6.0/5.0*(-0.5 - 2.0/3.0 - 4.0));
+        // Characteristics: t^C - t_L = Z_L (v^C - v_L), t^C - t_R = -Z_R (v^C - v_R)
+        check("L characteristic", t - L.tn, 2*(v - L.vn));
+        check("R characteristic", t - R.tn, -3*(v - R.vn));
+    }
+
+    Info<< "Homogeneous limit (interior flux), Zp = 2, Zs = 1" << endl;
+    {
+        const vector n(1, 0, 0);
+        const vector tL(-1, 0.5, 0), tR(-3, 1.5, 0);
+        const vector vL(2, 1, 0), vR(0, 3, 0);
+        const vector tC(acoustic::stickTraction(tL, tR, vL, vR, n, 2, 1));
+        // 1/2 (tL + tR) + Zp/2 dv_n n + Zs/2 dv_t
+        check("t_x", tC.x(), -2 + 1*(-2));
+        check("t_y", tC.y(), 1 + 0.5*2);
+    }
+
+    Info<< "Hugoniot check: identical bars, c 100, rho 0.01, v0 100, s 1" << endl;
+    {
+        const dictionary dict((IStringStream("s 1;"))());
+        contactRiemannSolvers::hugoniot solver(dict);
+        side L{0, 100, 0.01, 100, 1}, R{0, 0, 0.01, 100, 1};
+        scalar v, t;
+        solver.normalState(L, R, v, t);
+        check("v^C", v, 50);
+        check("t_n^C", t, -75);
+
+        const dictionary dict0((IStringStream("s 0;"))());
+        contactRiemannSolvers::hugoniot solver0(dict0);
+        solver0.normalState(L, R, v, t);
+        check("s = 0: v^C (acoustic)", v, 50);
+        check("s = 0: t_n^C (acoustic)", t, -50);
+
+        // Expansive jump: acoustic answer
+        side Le{0, 0, 0.01, 100, 1}, Re{0, 100, 0.01, 100, 1};
+        solver.normalState(Le, Re, v, t);
+        check("expansive: t_n^C (acoustic)", t, 50);
+
+        // Dissimilar (A4): rho_R = 0.02, c_R = 100/sqrt2; the root satisfies
+        // the quadratic and the R-side Hugoniot
+        side Rd{0, 0, 0.02, 100/Foam::sqrt(2.0), 1};
+        solver.normalState(L, Rd, v, t);
+        // R side: t^C = t_R - rho_R c_R (v^C - v_R) - s rho_R (v^C - v_R)^2
+        check
+        (
+            "dissimilar: R-side Hugoniot",
+            t,
+            -0.02*(100/Foam::sqrt(2.0))*v - 0.02*sqr(v)
+        );
+    }
+
+    Info<< "One-sided formulas, Zp = 2, Zs = 1, n = x" << endl;
+    {
+        const vector n(1, 0, 0);
+        const vector tL(-3, 1, 0), vL(1, 2, 0);
+
+        // Traction-free: v^C = v - t_n/Zp n - t_t/Zs
+        const vector vFree(acoustic::tractionVelocity(tL, vL, Zero, n, 2, 1));
+        check("free surface v_x", vFree.x(), 1 + 1.5);
+        check("free surface v_y", vFree.y(), 2 - 1);
+
+        // Rigid (prescribed velocity zero): t^C = t + Z (0 - v)
+        const vector tRigid(acoustic::velocityTraction(tL, vL, Zero, n, 2, 1));
+        check("rigid t_x", tRigid.x(), -3 - 2*1);
+        check("rigid t_y", tRigid.y(), 1 - 1*2);
+
+        // Symmetry / frictionless wall: v_n = 0, t_t = 0
+        vector tC, vC;
+        acoustic::mixedState(tL, vL, 0, Zero, n, 2, 1, tC, vC);
+        check("symmetry t_n", tC.x(), -3 - 2*1);
+        check("symmetry t_t", tC.y(), 0);
+        check("symmetry v_n", vC.x(), 0);
+        check("symmetry v_t (slip)", vC.y(), 2 - 1);
+
+        // Coulomb on a wall, k = 0.5: trial stick t_t = 1 - 2 = -1,
+        // |t_t| = 1 <= 0.5 |t_n| = 2.5: stick
+        // k = 0.1: limit 0.5 < 1: slip with t_t = -0.5, v_t = v - (t - t^C)/Zs
+        acoustic::mixedState(tL, vL, 0, vector(0, -0.5, 0), n, 2, 1, tC, vC);
+        check("Coulomb slip t_t", tC.y(), -0.5);
+        check("Coulomb slip v_t", vC.y(), 2 - (1 - (-0.5))/1);
+    }
+
+    Info<< nl << (nFailed ? "FAILED " : "All checks passed ")
+        << "(" << nFailed << " failed)" << endl;
+    return nFailed ? 1 : 0;
+}
+
+
+// ************************************************************************* //

@@ -143,8 +143,8 @@ def main():
         matplotlib.use('Agg')
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-        for i, (col, lab) in enumerate((('vx', 'velocity'), ('sxx', 'axial stress'))):
-            ax[i].plot(t, hist[:, 1 + 3 * 0 + i], 'b-', label='Bar One')
+        for i, lab in enumerate(('velocity', 'axial Cauchy stress')):
+            ax[i].plot(t, hist[:, 1 + i], 'b-', label='Bar One')
             ax[i].plot(t, hist[:, 4 + i], 'r-', label='Bar Two')
             if exact is not None:
                 ax[i].plot(exact[:, 0], exact[:, 1 + i], 'b:', label='Bar One exact')

@@ -383,8 +383,7 @@ Foam::contactPair::contactPair
     dict_(dict),
     riemann_(contactRiemannSolver::New(dict)),
     friction_(dict, "contact pair '" + name + "'"),
-    maxPenetration_(0),
-    nClosed_(0)
+    maxPenetration_(0)
 {
     auto findBody = [&](const word& key) -> solidBody&
     {
@@ -424,7 +423,6 @@ void Foam::contactPair::addFluxes()
     const label offsetA = localOffset(A_.points.size());
     const label offsetB = localOffset(B_.points.size());
 
-    nClosed_ = 0;
     vector vOther;
     forAll(A_.points, i)
     {
@@ -432,7 +430,6 @@ void Foam::contactPair::addFluxes()
         const pointData& b = dataB_[A_.partner[i]];
         if (pairState(A_.closed[i], a, b, A_.tC[i], A_.vC[i], vOther))
         {
-            ++nClosed_;
             A_.body->setSurfaceVelocity(A_.points[i], A_.vC[i]);
             const scalar pen =
                 -((dataVec(b, 0) - dataVec(a, 0)) & dataVec(a, 9));
@@ -450,7 +447,6 @@ void Foam::contactPair::addFluxes()
         }
         B_.tC[i] = -tC;
     }
-    reduce(nClosed_, sumOp<label>());
     reduce(maxPenetration_, maxOp<scalar>());
 
     // A: its own integrated tractions.  B: minus the forces of its

@@ -21,6 +21,21 @@ inline vector dataVec(const contactPair::pointData& d, const label o)
     return vector(d[o], d[o + 1], d[o + 2]);
 }
 
+// Normal of a point pair, from A to B: the bisector of A's normal and minus
+// B's.  Either normal alone makes the pair's Riemann problem lopsided where
+// the surfaces curve (edges and corners of a contact area), and mirrored
+// bodies then stop deforming as mirror images
+inline vector pairNormal
+(
+    const contactPair::pointData& a,
+    const contactPair::pointData& b
+)
+{
+    const vector n(dataVec(a, 9) - dataVec(b, 9));
+    const scalar magN = mag(n);
+    return magN > SMALL ? n/magN : dataVec(a, 9);
+}
+
 template<class T>
 List<T> allGather(const List<T>& local)
 {
@@ -124,7 +139,8 @@ void Foam::contactPair::matchSides()
             forAll(to, j)
             {
                 const vector d(to[j] - from[i]);
-                const scalar dt = mag(d - (d & fromN[i])*fromN[i]);
+                const vector n(gapDirection(fromN[i]));
+                const scalar dt = mag(d - (d & n)*n);
                 if (dt < best)
                 {
                     best = dt;
@@ -249,7 +265,7 @@ bool Foam::contactPair::pairState
     const vector xA(dataVec(a, 0)), xB(dataVec(b, 0));
     const vector vA(dataVec(a, 3)), vB(dataVec(b, 3));
     const vector tA(dataVec(a, 6)), tBown(dataVec(b, 6));
-    const vector n(dataVec(a, 9)), nBown(dataVec(b, 9));
+    const vector n(pairNormal(a, b)), nBown(dataVec(b, 9));
 
     // Open gap or (below) tension: both sides traction-free
     auto separate = [&]()
@@ -383,6 +399,7 @@ Foam::contactPair::contactPair
     dict_(dict),
     riemann_(contactRiemannSolver::New(dict)),
     friction_(dict, "contact pair '" + name + "'"),
+    matchDirection_(dict.getOrDefault<vector>("matchDirection", Zero)),
     maxPenetration_(0)
 {
     auto findBody = [&](const word& key) -> solidBody&
@@ -403,6 +420,17 @@ Foam::contactPair::contactPair
             << nl << "Bodies: " << flatOutput(names) << exit(FatalIOError);
         return bodies[0];
     };
+
+    if (dict.found("matchDirection"))
+    {
+        if (mag(matchDirection_) < SMALL)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Contact pair '" << name << "': keyword 'matchDirection'"
+                << " must be a non-zero vector" << exit(FatalIOError);
+        }
+        matchDirection_ /= mag(matchDirection_);
+    }
 
     solidBody& bodyA = findBody("bodyA");
     solidBody& bodyB = findBody("bodyB");
@@ -432,7 +460,10 @@ void Foam::contactPair::addFluxes()
         {
             A_.body->setSurfaceVelocity(A_.points[i], A_.vC[i]);
             const scalar pen =
-                -((dataVec(b, 0) - dataVec(a, 0)) & dataVec(a, 9));
+                -(
+                    (dataVec(b, 0) - dataVec(a, 0))
+                  & gapDirection(pairNormal(a, b))
+                );
             maxPenetration_ = max(maxPenetration_, pen/a[13]);
         }
     }
@@ -482,7 +513,9 @@ void Foam::contactPair::startStep()
     {
         const pointData& da = a[offsetA + i];
         const pointData& db = b[A_.partner[i]];
-        const scalar gap = (dataVec(db, 0) - dataVec(da, 0)) & dataVec(da, 9);
+        const scalar gap =
+            (dataVec(db, 0) - dataVec(da, 0))
+          & gapDirection(pairNormal(da, db));
         A_.closed[i] = (gap <= gapTolerance*da[13]);
         closedA[i] = A_.closed[i];
     }
@@ -509,7 +542,7 @@ Foam::label Foam::contactPair::localOffset(const label localSize)
 }
 
 
-Foam::scalar Foam::contactPair::deltaTLimit() const
+Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
 {
     const List<pointData> a(gatherData(A_));
     const List<pointData> b(gatherData(B_));
@@ -520,10 +553,14 @@ Foam::scalar Foam::contactPair::deltaTLimit() const
     {
         const pointData& da = a[offsetA + i];
         const pointData& db = b[A_.partner[i]];
-        const vector n(dataVec(da, 9));
+        const vector n(gapDirection(pairNormal(da, db)));
         const scalar gap = (dataVec(db, 0) - dataVec(da, 0)) & n;
         const scalar closing = (dataVec(da, 3) - dataVec(db, 3)) & n;
-        if (gap > gapTolerance*da[13] && closing > 0)
+        if
+        (
+            gap > gapTolerance*da[13] && closing > 0
+         && gap > closing*dtFloor
+        )
         {
             dt = min(dt, gap/closing);
         }

@@ -7,6 +7,7 @@
 #include "Time.H"
 #include "pointFieldIO.H"
 #include "emptyPolyPatch.H"
+#include "syncTools.H"
 #include "tensorCross.H"
 #include "acousticFormulas.H"
 #include "greenGauss.H"
@@ -261,6 +262,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     readScheme();
     material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
     createBoundaryConditions();
+    setConstraints();
     readState();
     material_->readState(mesh_);
     if (material_->plastic())
@@ -544,6 +546,67 @@ void Foam::solidBody::finishResiduals()
 }
 
 
+void Foam::solidBody::setConstraints()
+{
+    // Unit normals of every constraining patch at each of its points
+    List<DynamicList<vector>> normals(mesh_.nPoints());
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        if (!bc.constrainsNormal())
+        {
+            continue;
+        }
+        // Summed over processors: a point on a processor boundary must
+        // be constrained alike on every processor that holds it
+        const dualMesh::patchSubFaces& sf = dual_.subFaces(bc.patchi());
+        vectorField N(mesh_.nPoints(), Zero);
+        forAll(sf.point, k)
+        {
+            N[sf.point[k]] += sf.area[k];
+        }
+        syncTools::syncPointList(mesh_, N, plusEqOp<vector>(), vector::zero);
+        forAll(N, i)
+        {
+            if (magSqr(N[i]) > 0)
+            {
+                normals[i].append(N[i]/mag(N[i]));
+            }
+        }
+    }
+
+    DynamicList<label> points;
+    DynamicList<tensor> projections;
+    forAll(normals, i)
+    {
+        if (normals[i].empty())
+        {
+            continue;
+        }
+        // Gram-Schmidt: a point on two planes keeps only their common line
+        tensor P(I);
+        List<vector> basis;
+        for (const vector& n : normals[i])
+        {
+            vector e(n);
+            for (const vector& b : basis)
+            {
+                e -= (e & b)*b;
+            }
+            if (mag(e) > 1e-6)
+            {
+                e /= mag(e);
+                basis.append(e);
+                P -= e*e;
+            }
+        }
+        points.append(i);
+        projections.append(P);
+    }
+    constrainedPoints_.transfer(points);
+    constraintProjections_.transfer(projections);
+}
+
+
 void Foam::solidBody::rkStage(const scalar dt, const scalar a)
 {
     const scalarField& V = dual_.volumes();
@@ -583,6 +646,14 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
     forAll(surfacePoints_, k)
     {
         u_[surfacePoints_[k]] = uSurface[k];
+    }
+
+    // Symmetry planes: no normal velocity or displacement
+    forAll(constrainedPoints_, k)
+    {
+        const label i = constrainedPoints_[k];
+        lm_[i] = constraintProjections_[k] & lm_[i];
+        u_[i] = constraintProjections_[k] & u_[i];
     }
 
     Wext_ = a*Wext0_ + b*(Wext_ + dt*power_);
@@ -632,6 +703,27 @@ Foam::scalar Foam::solidBody::maxWaveSpeed() const
         );
     }
     return U;
+}
+
+
+Foam::scalar Foam::solidBody::minLength() const
+{
+    const labelList& start = dual_.edgeStart();
+    const labelList& end = dual_.edgeEnd();
+    const pointField& X = mesh_.points();
+    const scalarField& h = dual_.stabilityLengths();
+    scalar hMin2 = sqr(dual_.minStabilityLength());
+    forAll(start, e)
+    {
+        const label i = start[e], j = end[e];
+        const scalar stretch2 =
+            magSqr(x_[j] - x_[i])/magSqr(X[j] - X[i]);
+        if (stretch2 < 1)
+        {
+            hMin2 = min(hMin2, stretch2*sqr(min(h[i], h[j])));
+        }
+    }
+    return Foam::sqrt(returnReduce(hMin2, minOp<scalar>()));
 }
 
 

@@ -18,10 +18,11 @@ Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
         hMin = min(hMin, b.minLength());
         UMax = max(UMax, b.maxWaveSpeed());
     }
-    scalar dt = cfl*hMin/UMax;
+    const scalar dtStable = cfl*hMin/UMax;
+    scalar dt = dtStable;
     for (const contactPair& c : contacts)
     {
-        dt = min(dt, c.deltaTLimit());
+        dt = min(dt, c.deltaTLimit(0.25*dtStable));
     }
     return dt;
 }

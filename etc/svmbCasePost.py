@@ -97,16 +97,12 @@ def smoothness(p, edges, floor=0.0):
 
 
 def patch_points(body, patch):
-    """Mesh points of a patch (ASCII polyMesh)."""
+    """Mesh points of a patch (ASCII polyMesh; OpenFOAM writes nFaces
+    before startFace)."""
     text = open(mesh_dir(body) + '/boundary').read()
     m = re.search(r'\b%s\s*\{[^}]*?nFaces\s+(\d+);[^}]*?startFace\s+(\d+);'
                   % patch, text)
-    if m is None:
-        m = re.search(r'\b%s\s*\{[^}]*?startFace\s+(\d+);[^}]*?nFaces\s+'
-                      r'(\d+);' % patch, text)
-        start, nf = int(m.group(1)), int(m.group(2))
-    else:
-        nf, start = int(m.group(1)), int(m.group(2))
+    nf, start = int(m.group(1)), int(m.group(2))
     ftext = open(mesh_dir(body) + '/faces').read()
     faces = re.findall(r'\d+\(([\d\s]+)\)', ftext[ftext.index('}') + 1:])
     pts = set()

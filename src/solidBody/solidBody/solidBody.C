@@ -548,16 +548,18 @@ void Foam::solidBody::finishResiduals()
 
 void Foam::solidBody::setConstraints()
 {
-    // Unit normals of every constraining patch at each of its points
-    List<DynamicList<vector>> normals(mesh_.nPoints());
+    // Projector per point, I - sum e e over the orthonormalised normals of
+    // its constraining patches (a point on two planes keeps their common
+    // line).  Normals are summed over processors: a point on a processor
+    // boundary must be constrained alike on every processor holding it
+    List<tensor> P(mesh_.nPoints(), I);
+    boolList constrained(mesh_.nPoints(), false);
     for (const solidBoundaryCondition& bc : bcs_)
     {
         if (!bc.constrainsNormal())
         {
             continue;
         }
-        // Summed over processors: a point on a processor boundary must
-        // be constrained alike on every processor that holds it
         const dualMesh::patchSubFaces& sf = dual_.subFaces(bc.patchi());
         vectorField N(mesh_.nPoints(), Zero);
         forAll(sf.point, k)
@@ -569,41 +571,19 @@ void Foam::solidBody::setConstraints()
         {
             if (magSqr(N[i]) > 0)
             {
-                normals[i].append(N[i]/mag(N[i]));
+                constrained[i] = true;
+                vector e(P[i] & (N[i]/mag(N[i])));
+                if (mag(e) > 1e-6)
+                {
+                    e /= mag(e);
+                    P[i] -= e*e;
+                }
             }
         }
     }
 
-    DynamicList<label> points;
-    DynamicList<tensor> projections;
-    forAll(normals, i)
-    {
-        if (normals[i].empty())
-        {
-            continue;
-        }
-        // Gram-Schmidt: a point on two planes keeps only their common line
-        tensor P(I);
-        List<vector> basis;
-        for (const vector& n : normals[i])
-        {
-            vector e(n);
-            for (const vector& b : basis)
-            {
-                e -= (e & b)*b;
-            }
-            if (mag(e) > 1e-6)
-            {
-                e /= mag(e);
-                basis.append(e);
-                P -= e*e;
-            }
-        }
-        points.append(i);
-        projections.append(P);
-    }
-    constrainedPoints_.transfer(points);
-    constraintProjections_.transfer(projections);
+    constrainedPoints_ = findIndices(constrained, true);
+    constraintProjections_ = UIndirectList<tensor>(P, constrainedPoints_)();
 }
 
 

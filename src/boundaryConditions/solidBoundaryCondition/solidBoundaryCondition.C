@@ -4,12 +4,16 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidBoundaryCondition.H"
+#include "syncTools.H"
+#include "unitConversion.H"
 
 namespace Foam
 {
     defineTypeNameAndDebug(solidBoundaryCondition, 0);
     defineRunTimeSelectionTable(solidBoundaryCondition, dictionary);
 }
+
+const Foam::scalar Foam::solidBoundaryCondition::featureAngle = 30;
 
 
 Foam::solidBoundaryCondition::solidBoundaryCondition
@@ -22,7 +26,48 @@ Foam::solidBoundaryCondition::solidBoundaryCondition
     dual_(dual),
     patchi_(patchi),
     dict_(dict)
-{}
+{
+    const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
+    const polyMesh& mesh = dual_.mesh();
+
+    // Mean normal per point of the patch (summed over processors)
+    vectorField meanN(mesh.nPoints(), Zero);
+    forAll(sf.point, s)
+    {
+        meanN[sf.point[s]] += sf.area[s];
+    }
+    syncTools::syncPointList(mesh, meanN, plusEqOp<vector>(), vector::zero);
+    forAll(meanN, i)
+    {
+        meanN[i] /= max(mag(meanN[i]), VSMALL);
+    }
+
+    // Smallest cosine between a sub-face and its point's mean normal
+    scalarField minCos(mesh.nPoints(), 1.0);
+    forAll(sf.point, s)
+    {
+        const label i = sf.point[s];
+        minCos[i] = min(minCos[i], (sf.area[s] & meanN[i])/mag(sf.area[s]));
+    }
+    syncTools::syncPointList(mesh, minCos, minEqOp<scalar>(), 1.0);
+
+    const scalar cosFeature = cos(degToRad(featureAngle));
+    auto normal = [&](const label i, const vector& N) -> vector
+    {
+        return (minCos[i] >= cosFeature) ? meanN[i] : N;
+    };
+
+    normalPoint_.setSize(sf.size());
+    normalPrev_.setSize(sf.size());
+    normalNext_.setSize(sf.size());
+    forAll(sf.point, s)
+    {
+        const vector N(sf.area[s]/mag(sf.area[s]));
+        normalPoint_[s] = normal(sf.point[s], N);
+        normalPrev_[s] = normal(sf.prev[s], N);
+        normalNext_[s] = normal(sf.next[s], N);
+    }
+}
 
 
 Foam::autoPtr<Foam::solidBoundaryCondition> Foam::solidBoundaryCondition::New
@@ -78,17 +123,16 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     {
         const label i = sf.point[s];
         const scalar magA = mag(sf.area[s]);
-        const vector N(sf.area[s]/magA);
 
         vector tC, vC;
-        state(i, N, tC, vC);
+        state(i, normalPoint_[s], tC, vC);
 
         const scalar w = sf.nbrWeight[s];
         if (w > 0)
         {
             vector tP, vP, tN, vN;
-            state(sf.prev[s], N, tP, vP);
-            state(sf.next[s], N, tN, vN);
+            state(sf.prev[s], normalPrev_[s], tP, vP);
+            state(sf.next[s], normalNext_[s], tN, vN);
             tC = (1 - 2*w)*tC + w*(tP + tN);
             vC = (1 - 2*w)*vC + w*(vP + vN);
         }

@@ -57,7 +57,9 @@ void Foam::materialModels::mooneyRivlin::stress
           - 2*xi_*HH*sqrt(HH)/(d2*detF);
         const scalar sJ = volumetricSigmaJ(J[i]);
         const tensor SigmaH((3*xi_*sqrt(HH)/d2)*H[i]);
-        P[i] = 2*zeta_*j23*F[i] + tensorCross(SigmaH, F[i]) + (sDet + sJ)*H[i];
+        P[i] =
+            2*zeta_*j23*F[i] + tensorCross(SigmaH, F[i])
+          + (sDet + sJ + couplingPressure(detF, J[i]))*H[i];
         SigmaJ[i] = sJ;
     }
 }
@@ -79,7 +81,8 @@ void Foam::materialModels::mooneyRivlin::energy
             zeta_*pow(detF, -2.0/3.0)*(F[i] && F[i])
           + xi_*HH*sqrt(HH)/sqr(detF)
           - 3*(zeta_ + sqrt(3.0)*xi_)
-          + volumetricEnergy(J[i]);
+          + volumetricEnergy(J[i])
+          + couplingEnergy(detF, J[i]);
     }
 }
 

@@ -40,7 +40,9 @@ void Foam::materialModels::neoHookean::stress
         const scalar j23 = pow(detF, -2.0/3.0);
         const scalar FF = F[i] && F[i];
         const scalar sJ = volumetricSigmaJ(J[i]);
-        P[i] = mu_*j23*F[i] + (sJ - (mu_/3.0)*j23*FF/detF)*H[i];
+        P[i] =
+            mu_*j23*F[i]
+          + (sJ + couplingPressure(detF, J[i]) - (mu_/3.0)*j23*FF/detF)*H[i];
         SigmaJ[i] = sJ;
     }
 }
@@ -59,7 +61,8 @@ void Foam::materialModels::neoHookean::energy
         const scalar detF = (H[i] && F[i])/3.0;
         W[i] =
             0.5*mu_*(pow(detF, -2.0/3.0)*(F[i] && F[i]) - 3)
-          + volumetricEnergy(J[i]);
+          + volumetricEnergy(J[i])
+          + couplingEnergy(detF, J[i]);
     }
 }
 

@@ -132,7 +132,9 @@ void Foam::materialModels::vonMisesPlasticity::stress
             tauDevTensor += tauDev[a]*(n*n);
         }
         SigmaJ[i] = Jp/J[i];
-        P[i] = (tauDevTensor & inv(F[i]).T()) + SigmaJ[i]*H[i];
+        P[i] =
+            (tauDevTensor & inv(F[i]).T())
+          + (SigmaJ[i] + couplingPressure(det(F[i]), J[i]))*H[i];
     }
 }
 
@@ -160,7 +162,8 @@ void Foam::materialModels::vonMisesPlasticity::energy
         W[i] =
             mu_*(sqr(lnLam[0] - lnJ3) + sqr(lnLam[1] - lnJ3)
                + sqr(lnLam[2] - lnJ3))
-          + volumetricEnergyHencky(J[i]);
+          + volumetricEnergyHencky(J[i])
+          + couplingEnergy(det(F[i]), J[i]);
     }
 }
 

@@ -30,17 +30,7 @@ Foam::solidBoundaryCondition::solidBoundaryCondition
     const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
     const polyMesh& mesh = dual_.mesh();
 
-    // Mean normal per point of the patch (summed over processors)
-    vectorField meanN(mesh.nPoints(), Zero);
-    forAll(sf.point, s)
-    {
-        meanN[sf.point[s]] += sf.area[s];
-    }
-    syncTools::syncPointList(mesh, meanN, plusEqOp<vector>(), vector::zero);
-    forAll(meanN, i)
-    {
-        meanN[i] /= max(mag(meanN[i]), VSMALL);
-    }
+    const vectorField meanN(dual_.patchPointNormals(patchi_));
 
     // Smallest cosine between a sub-face and its point's mean normal
     scalarField minCos(mesh.nPoints(), 1.0);

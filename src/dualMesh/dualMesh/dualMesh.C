@@ -348,6 +348,25 @@ Foam::scalar Foam::dualMesh::minStabilityLength() const
 }
 
 
+Foam::tmp<Foam::vectorField>
+Foam::dualMesh::patchPointNormals(const label patchi) const
+{
+    tmp<vectorField> tN(new vectorField(nPoints(), Zero));
+    vectorField& N = tN.ref();
+    const patchSubFaces& sf = patchSubFaces_[patchi];
+    forAll(sf.point, s)
+    {
+        N[sf.point[s]] += sf.area[s];
+    }
+    syncTools::syncPointList(mesh_, N, plusEqOp<vector>(), vector::zero);
+    for (vector& n : N)
+    {
+        n /= max(mag(n), VSMALL);
+    }
+    return tN;
+}
+
+
 Foam::scalar Foam::dualMesh::sumPoints(const UList<scalar>& f) const
 {
     scalar s = 0;

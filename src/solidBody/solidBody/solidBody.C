@@ -560,19 +560,13 @@ void Foam::solidBody::setConstraints()
         {
             continue;
         }
-        const dualMesh::patchSubFaces& sf = dual_.subFaces(bc.patchi());
-        vectorField N(mesh_.nPoints(), Zero);
-        forAll(sf.point, k)
-        {
-            N[sf.point[k]] += sf.area[k];
-        }
-        syncTools::syncPointList(mesh_, N, plusEqOp<vector>(), vector::zero);
+        const vectorField N(dual_.patchPointNormals(bc.patchi()));
         forAll(N, i)
         {
             if (magSqr(N[i]) > 0)
             {
                 constrained[i] = true;
-                vector e(P[i] & (N[i]/mag(N[i])));
+                vector e(P[i] & N[i]);
                 if (mag(e) > 1e-6)
                 {
                     e /= mag(e);

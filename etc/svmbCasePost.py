@@ -30,7 +30,9 @@ Pressure smoothness at each written time and body:
 Numerical dissipation D = E0 + W_ext - (K + U + D_plastic): its smallest
 value and its largest decrease, both relative to the initial energy.
 --taylor-bar: final radius and length of the bar (probe 0 at the edge of
-the impact face, probe 2 at the top centre) against benchmarks.md.
+the impact face, probe 2 at the top centre) against benchmarks.md, and the
+range of the final radii of all points on the edge of the impact face
+(roundness of the foot).
 --contact-times: first contact and last separation from the x-momentum
 history of the first body (times at which it changes)."""
 import argparse
@@ -321,6 +323,17 @@ def main():
         r = np.hypot(X0[0] + pr['ux0'][-1], X0[2] + pr['uz0'][-1])
         summary['finalRadius_mm'] = float(1e3*r)
         summary['finalLength_mm'] = float(1e3*(32.4e-3 + pr['uy2'][-1]))
+        # Roundness of the foot: radii of all points initially on the edge
+        # of the impact face (a mesh imprint shows as a spread)
+        X = svmbPost.read_points(mesh_dir('region0') + '/points')
+        edge = (np.abs(X[:, 1]) < 1e-9) \
+            & (np.hypot(X[:, 0], X[:, 2]) > (1 - 1e-6)*3.2e-3)
+        last = written_times()[-1]
+        u = svmbPost.read_point_field(field_path(last, 'region0', 'u'))
+        x = X[edge] + u[edge]
+        radii = 1e3*np.hypot(x[:, 0], x[:, 2])
+        summary['finalRadiusRange_mm'] = [float(radii.min()),
+                                          float(radii.max())]
         summary['radiusTarget_mm'] = [7.0, 7.15]
         summary['radiusReference_mm'] = {
             'vertex-centred first-order FV (25519 points)': 7.06,

@@ -1,7 +1,8 @@
 // Taylor bar (benchmarks.md, C1): quarter of a cylinder of radius R and
 // length L along y, impact face at y = 0, in x >= 0, z >= 0.  Unstructured
 // tetrahedra of size h = R/(2 N) (hex = 1: an O-grid of hexahedra, N cells
-// along each edge of the quarter section, 25 (N - 1) layers).
+// along each edge of the quarter section, 25 (N - 1) layers; hex = 2: the
+// same O-grid's points split into structured tetrahedra).
 // N = 3, 5, 7 give about 2000, 9000 and 24000 points.  Patches:
 //   wall        y = 0 (impact face)       top     y = L
 //   symmetryX   x = 0                     symmetryZ  z = 0
@@ -35,8 +36,14 @@ Else
     Curve Loop(3) = {6, 9, -7, -3};    Plane Surface(3) = {3};
     Transfinite Curve{1:9} = N + 1;
     Transfinite Surface{1, 2, 3};
-    Recombine Surface{1, 2, 3};
-    Extrude{0, L, 0} { Surface{1, 2, 3}; Layers{25*(N - 1)}; Recombine; }
+    If (hex == 1)
+        Recombine Surface{1, 2, 3};
+        Extrude{0, L, 0} { Surface{1, 2, 3}; Layers{25*(N - 1)}; Recombine; }
+    Else
+        // hex = 2: the same points, triangles extruded to prisms that gmsh
+        // splits into three tetrahedra each (structured tets)
+        Extrude{0, L, 0} { Surface{1, 2, 3}; Layers{25*(N - 1)}; }
+    EndIf
     Coherence;
 EndIf
 

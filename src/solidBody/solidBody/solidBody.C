@@ -450,18 +450,11 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         scalar SJL, SJR;
         if (secondOrder_)
         {
-            const vector halfdX(0.5*(X[j] - X[i]));
-            const fluxState& qi = q_[i];
-            const fluxState& qj = q_[j];
-            const fluxState& phii = phi_[i];
-            const fluxState& phij = phi_[j];
-            const fluxStateGradient& Gi = G_[i];
-            const fluxStateGradient& Gj = G_[j];
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                qL[c] = qi[c] + phii[c]*(Gi[c] & halfdX);
-                qR[c] = qj[c] - phij[c]*(Gj[c] & halfdX);
-            }
+            limiter_->edgeStates
+            (
+                q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j],
+                0.5*(X[j] - X[i]), qL, qR
+            );
             vL = fluxVelocity(qL);
             vR = fluxVelocity(qR);
             PL = fluxStress(qL);

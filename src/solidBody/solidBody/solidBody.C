@@ -439,6 +439,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
 
     // Interior fluxes: one pass over the edges
     fluxState qL, qR;
+    const bool perEdgeLimiter = secondOrder_ && limiter_->perEdge();
     forAll(es, e)
     {
         const label i = es[e], j = ee[e];
@@ -450,11 +451,23 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         scalar SJL, SJR;
         if (secondOrder_)
         {
-            limiter_->edgeStates
-            (
-                q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j],
-                0.5*(X[j] - X[i]), qL, qR
-            );
+            const vector halfdX(0.5*(X[j] - X[i]));
+            if (perEdgeLimiter)
+            {
+                limiter_->edgeStates
+                (
+                    q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j], halfdX,
+                    qL, qR
+                );
+            }
+            else
+            {
+                limiter::pointLimitedStates
+                (
+                    q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j], halfdX,
+                    qL, qR
+                );
+            }
             vL = fluxVelocity(qL);
             vR = fluxVelocity(qR);
             PL = fluxStress(qL);

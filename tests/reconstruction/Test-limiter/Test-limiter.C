@@ -46,6 +46,19 @@ int main(int argc, char *argv[])
     List<fluxState> q(nPts), phi(nPts);
     List<fluxStateGradient> G(nPts);
 
+    // Uniform random values in [0, 1] for every point and component
+    auto randomField = [&q](const label seed)
+    {
+        Random rnd(seed);
+        forAll(q, i)
+        {
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                q[i][c] = rnd.sample01<scalar>();
+            }
+        }
+    };
+
     // Linear field: exact midpoint states with both limiters
     for (const word type : {"barthJespersen", "vanAlbada"})
     {
@@ -94,14 +107,7 @@ int main(int argc, char *argv[])
 
     // Random field: no new extrema
     {
-        Random rnd(7);
-        forAll(q, i)
-        {
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                q[i][c] = rnd.sample01<scalar>();
-            }
-        }
+        randomField(7);
         greenGaussGradient(dual, q, G);
         bj->limit(dual, q, G, phi);
 
@@ -152,14 +158,7 @@ int main(int argc, char *argv[])
     // van Albada, random field: midpoint states between the end values
     autoPtr<limiter> va(limiter::New("vanAlbada", dictionary()));
     {
-        Random rnd(11);
-        forAll(q, i)
-        {
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                q[i][c] = rnd.sample01<scalar>();
-            }
-        }
+        randomField(11);
         greenGaussGradient(dual, q, G);
         va->limit(dual, q, G, phi);
 

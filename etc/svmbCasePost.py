@@ -319,15 +319,15 @@ def main():
 
     if args.taylor_bar:
         pr = svmbPost.read_csv('postProcessing/region0/probes.csv')
-        X0 = np.array([3.2e-3, 0, 0])
-        r = np.hypot(X0[0] + pr['ux0'][-1], X0[2] + pr['uz0'][-1])
+        R = 3.2e-3  # bar radius (benchmarks.md)
+        r = np.hypot(R + pr['ux0'][-1], pr['uz0'][-1])  # probe 0 at (R 0 0)
         summary['finalRadius_mm'] = float(1e3*r)
         summary['finalLength_mm'] = float(1e3*(32.4e-3 + pr['uy2'][-1]))
         # Roundness of the foot: radii of all points initially on the edge
         # of the impact face (a mesh imprint shows as a spread)
         X = svmbPost.read_points(mesh_dir('region0') + '/points')
         edge = (np.abs(X[:, 1]) < 1e-9) \
-            & (np.hypot(X[:, 0], X[:, 2]) > (1 - 1e-6)*3.2e-3)
+            & (np.hypot(X[:, 0], X[:, 2]) > (1 - 1e-6)*R)
         last = written_times()[-1]
         u = svmbPost.read_point_field(field_path(last, 'region0', 'u'))
         x = X[edge] + u[edge]

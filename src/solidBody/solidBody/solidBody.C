@@ -439,7 +439,6 @@ void Foam::solidBody::assembleResiduals(const scalar t)
 
     // Interior fluxes: one pass over the edges
     fluxState qL, qR;
-    const bool perEdgeLimiter = secondOrder_ && limiter_->perEdge();
     forAll(es, e)
     {
         const label i = es[e], j = ee[e];
@@ -452,22 +451,10 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         if (secondOrder_)
         {
             const vector halfdX(0.5*(X[j] - X[i]));
-            if (perEdgeLimiter)
-            {
-                limiter_->edgeStates
-                (
-                    q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j], halfdX,
-                    qL, qR
-                );
-            }
-            else
-            {
-                limiter::pointLimitedStates
-                (
-                    q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j], halfdX,
-                    qL, qR
-                );
-            }
+            limiter_->midpointStates
+            (
+                q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j], halfdX, qL, qR
+            );
             vL = fluxVelocity(qL);
             vR = fluxVelocity(qR);
             PL = fluxStress(qL);

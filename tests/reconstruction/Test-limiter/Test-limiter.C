@@ -87,7 +87,7 @@ int main(int argc, char *argv[])
         {
             const label i = es[e], j = ee[e];
             const point mid(0.5*(X[i] + X[j]));
-            lim->edgeStates
+            lim->midpointStates
             (
                 q[i], q[j], G[i], G[j], phi[i], phi[j],
                 0.5*(X[j] - X[i]), qL, qR
@@ -168,7 +168,10 @@ int main(int argc, char *argv[])
         {
             const label i = es[e], j = ee[e];
             const vector halfdX(0.5*(X[j] - X[i]));
-            va->edgeStates(q[i], q[j], G[i], G[j], phi[i], phi[j], halfdX, qL, qR);
+            va->midpointStates
+            (
+                q[i], q[j], G[i], G[j], phi[i], phi[j], halfdX, qL, qR
+            );
             for (direction c = 0; c < nFluxComponents; ++c)
             {
                 const scalar lo = min(q[i][c], q[j][c]);
@@ -204,11 +207,6 @@ int main(int argc, char *argv[])
         }
         greenGaussGradient(dual, q, G);
         bj->limit(dual, q, G, phi);
-        List<fluxState> one(nPts);
-        for (fluxState& p : one)
-        {
-            p = 1.0;
-        }
 
         scalar errVA = 0, errBJ = 0, errNone = 0, errFirst = 0;
         fluxState qL, qR, qLb, qRb;
@@ -217,8 +215,14 @@ int main(int argc, char *argv[])
             const label i = es[e], j = ee[e];
             const vector halfdX(0.5*(X[j] - X[i]));
             const scalar exact = -magSqr(0.5*(X[i] + X[j]) - X0);
-            va->edgeStates(q[i], q[j], G[i], G[j], one[i], one[j], halfdX, qL, qR);
-            bj->edgeStates(q[i], q[j], G[i], G[j], phi[i], phi[j], halfdX, qLb, qRb);
+            va->midpointStates  // per edge: Phi unused
+            (
+                q[i], q[j], G[i], G[j], phi[i], phi[j], halfdX, qL, qR
+            );
+            bj->midpointStates
+            (
+                q[i], q[j], G[i], G[j], phi[i], phi[j], halfdX, qLb, qRb
+            );
             errVA += mag(qL[0] - exact) + mag(qR[0] - exact);
             errBJ += mag(qLb[0] - exact) + mag(qRb[0] - exact);
             errNone +=

@@ -316,6 +316,11 @@ def main():
     m = re.search(r'^Throughput: (\S+) .*\((\d+) points', log, re.M)
     summary['throughput'], summary['points'] = float(m.group(1)), \
         int(m.group(2))
+    # Contact pairs: largest interpenetration in local edge lengths
+    pen = [float(x) for x in re.findall(
+        r'largest interpenetration (\S+) of the local edge length', log)]
+    if pen:
+        summary['maxInterpenetration'] = max(pen)
 
     if args.taylor_bar:
         pr = svmbPost.read_csv('postProcessing/region0/probes.csv')

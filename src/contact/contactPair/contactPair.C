@@ -278,7 +278,7 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::gatherData
 }
 
 
-bool Foam::contactPair::pairState
+void Foam::contactPair::pairState
 (
     const bool closed,
     const pointData& a,
@@ -291,7 +291,6 @@ bool Foam::contactPair::pairState
     const materialModel& mA = A_.body->material();
     const materialModel& mB = B_.body->material();
 
-    const vector xA(dataVec(a, 0)), xB(dataVec(b, 0));
     const vector vA(dataVec(a, 3)), vB(dataVec(b, 3));
     const vector tA(dataVec(a, 6)), tBown(dataVec(b, 6));
     const vector n(pairNormal(a, b)), nBown(dataVec(b, 9));
@@ -305,12 +304,12 @@ bool Foam::contactPair::pairState
         (
             tBown, vB, Zero, nBown, mB.Zp(), mB.Zs()
         );
-        return false;
     };
 
     if (!closed)
     {
-        return separate();
+        separate();
+        return;
     }
 
     // Traction of B measured with A's normal: t^R = -P^B N^B
@@ -323,7 +322,8 @@ bool Foam::contactPair::pairState
 
     if (tnC >= 0)
     {
-        return separate();
+        separate();
+        return;
     }
 
     // Tangential (acoustic)
@@ -373,7 +373,6 @@ bool Foam::contactPair::pairState
     tC = tnC*n + ttC;
     vCA = vnC*n + vtA;
     vCB = vnC*n + vtB;
-    return true;
 }
 
 

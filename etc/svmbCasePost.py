@@ -3,7 +3,7 @@
 parts B and C).  Run in a case directory after solidVertexMBFoam:
 
     svmbCasePost.py [--plane x|y|z] [--taylor-bar] [--contact-times]
-                    [--contact-patch name]
+                    [--contact-patch name] [--plane-strain x|y|z]
 
 Reads every body's postProcessing/<body>/{energy,probes}.csv, the written
 time directories (ASCII point fields) and log.solidVertexMBFoam, and writes
@@ -33,6 +33,11 @@ value and its largest decrease, both relative to the initial energy.
 the impact face, probe 2 at the top centre) against benchmarks.md, and the
 range of the final radii of all points on the edge of the impact face
 (roundness of the foot).
+--plane-strain: planeStrainMismatch, the largest velocity difference
+between the two copies of an in-plane point of a one-layer mesh (across
+the given direction) over the largest speed, at any written time: zero for
+plane strain (solidBody ties the copies; round-off of the written fields
+is about 1e-10).
 --contact-times: first contact and last separation from the x-momentum
 history of the first body (times at which it changes)."""
 import argparse
@@ -133,6 +138,40 @@ def written_times():
     return [d for t, d in sorted(times)]
 
 
+def plane_strain_mismatch(names, X, c):
+    """max over written times and bodies of max |v_a - v_b| / max |v| over
+    the pairs (a, b) of points at the same in-plane position on the two
+    planes c = min and c = max of a one-layer mesh"""
+    worst = 0.0
+    for b in names:
+        x = X[b]
+        size = np.ptp(x, axis=0).max()
+        lo = np.abs(x[:, c] - x[:, c].min()) < 1e-9*size
+        hi = np.abs(x[:, c] - x[:, c].max()) < 1e-9*size
+        inplane = [k for k in range(3) if k != c]
+        def order(mask):
+            idx = np.nonzero(mask)[0]
+            key = np.round(x[idx][:, inplane]/size, 9)
+            return idx[np.lexsort((key[:, 1], key[:, 0]))]
+        a, bb = order(lo), order(hi)
+        if len(a) != len(bb) or len(a) + len(bb) != len(x):
+            sys.exit('svmbCasePost: body %s is not a one-layer mesh across %s'
+                     % (b, 'xyz'[c]))
+        for time in written_times():
+            path = field_path(time, b, 'v')
+            if not os.path.isfile(path):
+                continue
+            try:
+                v = svmbPost.read_point_field(path)
+            except ValueError:      # uniform
+                continue
+            vmax = np.abs(v).max()
+            if vmax > 0:
+                worst = max(worst, float(
+                    np.linalg.norm(v[a] - v[bb], axis=1).max()/vmax))
+    return worst
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--plane', choices=['x', 'y', 'z'], default=None)
@@ -140,6 +179,7 @@ def main():
                     help='coordinate of the --plane section')
     ap.add_argument('--taylor-bar', action='store_true')
     ap.add_argument('--contact-times', action='store_true')
+    ap.add_argument('--plane-strain', choices=['x', 'y', 'z'], default=None)
     ap.add_argument('--contact-patch', default=None,
                     help='also measure smoothness away from this patch')
     args = ap.parse_args()
@@ -308,6 +348,10 @@ def main():
             summary['maxExtremaFractionBulk'] = max(
                 e[b]['extremaFractionBulk'] for e in smooth for b in names
                 if b in e)
+
+    if args.plane_strain:
+        summary['planeStrainMismatch'] = plane_strain_mismatch(
+            names, X, 'xyz'.index(args.plane_strain))
 
     # Run statistics
     log = open('log.solidVertexMBFoam').read()

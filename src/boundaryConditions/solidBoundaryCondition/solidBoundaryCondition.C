@@ -117,6 +117,13 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         vector tC, vC;
         state(i, normalPoint_[s], tC, vC);
 
+        // The power is the same quadrature of the pointwise power t.v, not
+        // the product of the averaged t and v: a fixed frictionless wall or
+        // a symmetry plane then does no work, as in the continuum (the
+        // product of averages is not zero at a contact perimeter, where an
+        // open neighbour approaching the wall meets a closed point's
+        // pressure, and would hide numerical dissipation as external work)
+        scalar pC = tC & vC;
         const scalar w = sf.nbrWeight[s];
         if (w > 0)
         {
@@ -125,11 +132,12 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
             state(sf.next[s], normalNext_[s], tN, vN);
             tC = (1 - 2*w)*tC + w*(tP + tN);
             vC = (1 - 2*w)*vC + w*(vP + vN);
+            pC = (1 - 2*w)*pC + w*((tP & vP) + (tN & vN));
         }
 
         Rp[i] += magA*tC;
         D[i] += vC*sf.area[s];
-        power += magA*(tC & vC);
+        power += magA*pC;
     }
 
     return power;

@@ -399,9 +399,16 @@ Foam::scalar Foam::contactPair::addSideFluxes
         const vector vC((1 - 2*w)*side.vC[i] + w*(side.vC[ip] + side.vC[in]));
         const scalar magA = mag(sf.area[s]);
 
+        // Quadrature of the pointwise power, as for boundary conditions
+        // (solidBoundaryCondition::addFluxes): frictionless matched contact
+        // then exchanges energy between the bodies without creating any
+        const scalar pC =
+            (1 - 2*w)*(side.tC[i] & side.vC[i])
+          + w*((side.tC[ip] & side.vC[ip]) + (side.tC[in] & side.vC[in]));
+
         side.force[i] += magA*tC;
         D[sf.point[s]] += vC*sf.area[s];
-        power += magA*(tC & vC);
+        power += magA*pC;
     }
     if (tractions)
     {

@@ -2,8 +2,8 @@
 // the x-y plane extruded 1 m along z; length 2.6 m (front at x = 0, facing
 // -x), height 1 m; bonnet and boot at 0.6 m, cabin roof at 1 m, front
 // bottom rounded with R1 = 0.2 m, rear top with R2 = 0.3 m.
-// Unstructured tetrahedra of size h (0.1 m: about 2300 points, 0.07 m:
-// about 6300).  Patches:
+// Unstructured tetrahedra of size h (0.14 m: about 1200 points, 0.1 m:
+// about 2300, 0.07 m: about 6300).  Patches:
 //   front   the front face x = 0 (faces the wall)
 //   body    everything else
 DefineConstant[ h = 0.1 ];

@@ -106,6 +106,18 @@ int main(int argc, char *argv[])
         Info<< "Contact " << c.name() << ": largest interpenetration "
             << c.maxPenetration() << " of the local edge length" << nl;
     }
+    for (const solidBody& b : bodies)
+    {
+        if (b.nEnergyLimitedStages())
+        {
+            Info<< "Body " << b.name() << ": energyStable blended the"
+                << " interior fluxes towards first order in "
+                << b.nEnergyLimitedStages() << " of "
+                << stats.nSteps()*tvdRungeKutta2::nStages
+                << " stages (smallest second-order weight "
+                << b.minEnergyBlending() << ")" << nl;
+        }
+    }
     stats.report(Info);
     Info<< endl;
 

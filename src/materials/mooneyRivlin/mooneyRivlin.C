@@ -60,7 +60,7 @@ void Foam::materialModels::mooneyRivlin::stress
         P[i] =
             2*zeta_*j23*F[i] + tensorCross(SigmaH, F[i])
           + (sDet + sJ + couplingPressure(detF, J[i]))*H[i];
-        SigmaJ[i] = sJ;
+        SigmaJ[i] = sJ + couplingSigmaJ(detF, J[i]);
     }
 }
 

@@ -43,7 +43,7 @@ void Foam::materialModels::neoHookean::stress
         P[i] =
             mu_*j23*F[i]
           + (sJ + couplingPressure(detF, J[i]) - (mu_/3.0)*j23*FF/detF)*H[i];
-        SigmaJ[i] = sJ;
+        SigmaJ[i] = sJ + couplingSigmaJ(detF, J[i]);
     }
 }
 

@@ -124,17 +124,21 @@ void Foam::materialModels::vonMisesPlasticity::stress
         );
 
         // Isochoric (deviatoric Kirchhoff) part through F, pressure from
-        // the conserved J: P = tau' F^-T + Sigma_J(J) cof F
+        // the conserved J: P = tau' F^-T + (U'(J) + tie) cof F.  The
+        // J stabilisation uses Sigma_J = dW/dJ (the tie's energy,
+        // materialModel.H), so in the elastic range the energy balance is
+        // exact, as for the hyperelastic models
         tensor tauDevTensor(Zero);
         for (direction a = 0; a < 3; ++a)
         {
             const vector n(dirs.row(a));
             tauDevTensor += tauDev[a]*(n*n);
         }
-        SigmaJ[i] = Jp/J[i];
+        const scalar detF = det(F[i]);
         P[i] =
             (tauDevTensor & inv(F[i]).T())
-          + (SigmaJ[i] + couplingPressure(det(F[i]), J[i]))*H[i];
+          + (Jp/J[i] + couplingPressure(detF, J[i]))*H[i];
+        SigmaJ[i] = Jp/J[i] + couplingSigmaJ(detF, J[i]);
     }
 }
 

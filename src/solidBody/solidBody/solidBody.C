@@ -11,6 +11,7 @@
 #include "tensorCross.H"
 #include "acousticFormulas.H"
 #include "greenGauss.H"
+#include "vector2D.H"
 
 // * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
 
@@ -52,12 +53,17 @@ void Foam::solidBody::readScheme()
     checkKeywords
     (
         scheme,
-        {"secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw"}
+        {
+            "secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw",
+            "energyStable"
+        }
     );
 
     JLaw_ = scheme.getOrDefault<Switch>("JLaw", true);
     HLaw_ = scheme.getOrDefault<Switch>("HLaw", false);
     secondOrder_ = scheme.getOrDefault<Switch>("secondOrder", true);
+    energyStable_ =
+        secondOrder_ && scheme.getOrDefault<Switch>("energyStable", true);
 
     if (secondOrder_)
     {
@@ -243,6 +249,9 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     HLaw_(false),
     secondOrder_(true),
     limiter_(),
+    energyStable_(false),
+    nEnergyLimited_(0),
+    minEnergyTheta_(1),
     bcs_(),
     bodyForce_(dict_.getOrDefault<vector>("bodyForce", Zero)),
     Wext_(0),
@@ -287,6 +296,22 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
         q_.setSize(nPts);
         phi_.setSize(nPts);
         G_.setSize(nPts);
+    }
+    if (energyStable_)
+    {
+        edgeAreaSum_.setSize(nPts, Zero);
+        edgeAreaMag_.setSize(nPts, 0);
+        const labelList& es = dual_.edgeStart();
+        const labelList& ee = dual_.edgeEnd();
+        const vectorField& Ne = dual_.edgeNormals();
+        const scalarField& Ae = dual_.edgeMagSf();
+        forAll(es, e)
+        {
+            edgeAreaSum_[es[e]] += Ae[e]*Ne[e];
+            edgeAreaSum_[ee[e]] -= Ae[e]*Ne[e];
+            edgeAreaMag_[es[e]] += Ae[e];
+            edgeAreaMag_[ee[e]] += Ae[e];
+        }
     }
 
     updateConstitutive();
@@ -400,6 +425,42 @@ bool Foam::solidBody::updateConstitutive()
 }
 
 
+Foam::vector2D Foam::solidBody::interiorProduction
+(
+    const List<vector>& Rp,
+    const List<tensor>& D,
+    const List<scalar>& RJ
+) const
+{
+    // Per edge, the fluxes add t.(v_i - v_j) + v_avg.(t_i - t_j)
+    // + dS (Sigma_J,i - Sigma_J,j) to the rate, of which
+    // A (t_i.v_i - t_j.v_j) (t = P N) only moves energy between the two
+    // points.  Summed over the edges and regrouped by point, that
+    // telescoping part is v_i.P_i.S_i with S_i = sum of the point's
+    // outward edge area vectors (fixed, reference configuration).  One
+    // pass over the points, with the residuals as they are after the edge
+    // loop, gives the production.  The second component is the scale of
+    // its rounding error (|v| |P| times the point's total edge area).
+    vector2D prod(Zero);
+    forAll(Rp, i)
+    {
+        const vector& v = v_[i];
+        const tensor& P = P_[i];
+        prod.x() +=
+            (v & Rp[i]) + (P && D[i]) - (v & (P & edgeAreaSum_[i]));
+        prod.y() += mag(v)*mag(P)*edgeAreaMag_[i];
+    }
+    if (JLaw_)
+    {
+        forAll(RJ, i)
+        {
+            prod.x() += SigmaJ_[i]*RJ[i];
+        }
+    }
+    return prod;
+}
+
+
 void Foam::solidBody::assembleResiduals(const scalar t)
 {
     const labelList& es = dual_.edgeStart();
@@ -438,40 +499,21 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         limiter_->limit(dual_, q_, G_, phi_);
     }
 
-    // Interior fluxes: one pass over the edges
-    fluxState qL, qR;
-    forAll(es, e)
+    // One edge's upwind fluxes from its two midpoint states, added to the
+    // residual lists Rp, D, RJ
+    auto addEdgeFlux =
+    [&]
+    (
+        const label e,
+        const vector& vL, const vector& vR,
+        const tensor& PL, const tensor& PR,
+        const scalar SJL, const scalar SJR,
+        List<vector>& Rp, List<tensor>& D, List<scalar>& RJ
+    )
     {
         const label i = es[e], j = ee[e];
         const vector& N = Ne[e];
         const scalar A = Ae[e];
-
-        vector vL, vR;
-        tensor PL, PR;
-        scalar SJL, SJR;
-        if (secondOrder_)
-        {
-            const vector halfdX(0.5*(X[j] - X[i]));
-            limiter_->midpointStates
-            (
-                q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j], halfdX, qL, qR
-            );
-            vL = fluxVelocity(qL);
-            vR = fluxVelocity(qR);
-            PL = fluxStress(qL);
-            PR = fluxStress(qR);
-            SJL = fluxSigmaJ(qL);
-            SJR = fluxSigmaJ(qR);
-        }
-        else
-        {
-            vL = v_[i];
-            vR = v_[j];
-            PL = P_[i];
-            PR = P_[j];
-            SJL = SigmaJ_[i];
-            SJR = SigmaJ_[j];
-        }
 
         // Spatial normal from the average area map
         const vector hN(0.5*((H[i] & N) + (H[j] & N)));
@@ -490,19 +532,117 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         (
             A*acoustic::stickTraction(PL & N, PR & N, vL, vR, n, Zn, Zs)
         );
-        Rp_[i] += tC;
-        Rp_[j] -= tC;
+        Rp[i] += tC;
+        Rp[j] -= tC;
 
         // Un-stabilised average velocity: preserves the involutions
         const tensor vN((0.5*A)*(vL + vR)*N);
-        D_[i] += vN;
-        D_[j] -= vN;
+        D[i] += vN;
+        D[j] -= vN;
 
         if (JLaw_)
         {
             const scalar dS = Sfactor*A*(hN & hN)*(SJR - SJL);
-            RJ_[i] += dS;
-            RJ_[j] -= dS;
+            RJ[i] += dS;
+            RJ[j] -= dS;
+        }
+    };
+
+    // Interior fluxes: one pass over the edges
+    if (secondOrder_)
+    {
+        fluxState qL, qR;
+        forAll(es, e)
+        {
+            const label i = es[e], j = ee[e];
+            const vector halfdX(0.5*(X[j] - X[i]));
+            limiter_->midpointStates
+            (
+                q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j], halfdX, qL, qR
+            );
+            addEdgeFlux
+            (
+                e,
+                fluxVelocity(qL), fluxVelocity(qR),
+                fluxStress(qL), fluxStress(qR),
+                fluxSigmaJ(qL), fluxSigmaJ(qR),
+                Rp_, D_, RJ_
+            );
+        }
+    }
+    else
+    {
+        forAll(es, e)
+        {
+            const label i = es[e], j = ee[e];
+            addEdgeFlux
+            (
+                e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
+                Rp_, D_, RJ_
+            );
+        }
+    }
+
+    // Energy stability: the residuals, and so the body's energy rate
+    // sum v.Rp + P:D + Sigma_J RJ, are linear in a blend
+    // R = R0 + theta (R2 - R0) of the first- and second-order interior
+    // residuals.  If the second-order fluxes produce energy, take the
+    // theta that makes their production zero: the interior fluxes then
+    // never create energy (with Sigma_J = dW/dJ the rate is exactly the
+    // energy's, materialModel.H).  One theta for the whole body, over all
+    // processors, keeps the blend smooth in space.
+    if (energyStable_)
+    {
+        const vector2D S2
+        (
+            returnReduce(interiorProduction(Rp_, D_, RJ_), sumOp<vector2D>())
+        );
+
+        // (Productions within rounding of zero, as in uniform motion, are
+        // left alone)
+        if (S2.x() > 1e-12*S2.y())
+        {
+            const label nPts = Rp_.size();
+            if (Rp0_.size() != nPts)
+            {
+                Rp0_.setSize(nPts);
+                D0_.setSize(nPts);
+                RJ0_.setSize(JLaw_ ? nPts : 0);
+            }
+            Rp0_ = Zero;
+            D0_ = Zero;
+            RJ0_ = 0;
+            forAll(es, e)
+            {
+                const label i = es[e], j = ee[e];
+                addEdgeFlux
+                (
+                    e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
+                    Rp0_, D0_, RJ0_
+                );
+            }
+            const scalar S0 = min
+            (
+                returnReduce
+                (
+                    interiorProduction(Rp0_, D0_, RJ0_).x(),
+                    sumOp<scalar>()
+                ),
+                0
+            );
+            const scalar theta = S0 < 0 ? -S0/(S2.x() - S0) : 0;
+
+            forAll(Rp_, i)
+            {
+                Rp_[i] = Rp0_[i] + theta*(Rp_[i] - Rp0_[i]);
+                D_[i] = D0_[i] + theta*(D_[i] - D0_[i]);
+            }
+            forAll(RJ_, i)
+            {
+                RJ_[i] = RJ0_[i] + theta*(RJ_[i] - RJ0_[i]);
+            }
+            ++nEnergyLimited_;
+            minEnergyTheta_ = min(minEnergyTheta_, theta);
         }
     }
 

@@ -170,12 +170,11 @@ int main(int argc, char *argv[])
             }
         }
 
-        // Independent J (J law): P = dW/dF|J + Sigma_J cof F, and Sigma_J
-        // = dW/dJ + mu (det F - J): the volumetric part's derivative without
-        // the det F - J coupling energy mu/2 (det F - J)^2, whose J
-        // derivative would cancel its F derivative in P (materialModel.H).
-        // The semi-discrete energy balance is then exact up to the
-        // coupling's power mu (det F - J) dJ/dt, small as det F - J is
+        // Independent J (J law): P = dW/dF|J + Sigma_J cof F with Sigma_J
+        // = dW/dJ, the J-conjugate stress the J stabilisation uses.  With
+        // both, the semi-discrete energy balance is exact and the scheme
+        // only dissipates (method.md, section 7; the tie energy in
+        // materialModel.H is built for this)
         if (finiteStrain && !m.hugoniot())
         {
             scalar err = 0;
@@ -199,12 +198,12 @@ int main(int argc, char *argv[])
                     (energyFJ(m, F, J + h) - energyFJ(m, F, J - h))/(2*h);
                 const scalar scale = max(mag(P), m.kappa()*1e-3);
                 err = max(err, mag(P - dW - SJ*cofactor(F))/scale);
-                err = max(err, mag(SJ - dWdJ - m.mu()*(det(F) - J))/scale);
+                err = max(err, mag(SJ - dWdJ)/scale);
             }
             check
             (
                 err < 1e-6,
-                "J != det F: P = dW/dF|J + Sigma_J cof F, Sigma_J = dW/dJ + mu (det F - J)",
+                "J != det F: P = dW/dF|J + Sigma_J cof F, Sigma_J = dW/dJ",
                 err, 1e-6
             );
         }
@@ -289,6 +288,42 @@ int main(int argc, char *argv[])
                 err = max(err, mag(P - dW)/mag(P));
             }
             check(err < 1e-5, "elastic range: P = dW/dF", err, 1e-5);
+        }
+
+        // Elastic range with an independent J (J law): P = dW/dF|J
+        // + Sigma_J cof F and Sigma_J = dW/dJ, as for the hyperelastic
+        // models; without it the det F - J tie exchanges energy with
+        // nothing (the plastic car's dissipation fell by 0.004 % of E0)
+        {
+            scalar err = 0;
+            for (label k = 0; k < 10; ++k)
+            {
+                tensor F(I);
+                for (direction c = 0; c < 9; ++c) F[c] += 2e-3*(rnd.sample01<scalar>() - 0.5);
+                const scalar J = det(F)*(1 + 2e-3*(rnd.sample01<scalar>() - 0.5));
+                tensor P;
+                scalar SJ;
+                stressFJ(m, F, J, P, SJ);
+                const scalar h = 1e-8;
+                tensor dW(Zero);
+                for (direction c = 0; c < 9; ++c)
+                {
+                    tensor Fp(F), Fm(F);
+                    Fp[c] += h; Fm[c] -= h;
+                    dW[c] = (energyFJ(m, Fp, J) - energyFJ(m, Fm, J))/(2*h);
+                }
+                const scalar dWdJ =
+                    (energyFJ(m, F, J + h) - energyFJ(m, F, J - h))/(2*h);
+                err = max(err, mag(P - dW - SJ*cofactor(F))/mag(P));
+                err = max(err, mag(SJ - dWdJ)/mag(P));
+            }
+            check
+            (
+                err < 1e-5,
+                "elastic range, J != det F: P = dW/dF|J + Sigma_J cof F,"
+                " Sigma_J = dW/dJ",
+                err, 1e-5
+            );
         }
 
         // Uniaxial stress at log strain eps (monotonic, from the virgin

@@ -355,11 +355,18 @@ def main():
 
     # Run statistics
     log = open('log.solidVertexMBFoam').read()
-    m = re.search(r'^Finished (\d+) steps in (\S+) s wall', log, re.M)
-    summary['steps'], summary['wallTime'] = int(m.group(1)), float(m.group(2))
-    m = re.search(r'^Throughput: (\S+) .*\((\d+) points', log, re.M)
-    summary['throughput'], summary['points'] = float(m.group(1)), \
-        int(m.group(2))
+    # (A restarted run appends to the log: its last report counts since
+    # t = 0, over all runs; throughput is that of the last run)
+    m = re.findall(r'^Finished (\d+) steps in (\S+) s wall', log, re.M)[-1]
+    summary['steps'], summary['wallTime'] = int(m[0]), float(m[1])
+    since = re.findall(
+        r'^Since t = 0: (\d+) steps in (\S+) s wall over (\d+) runs', log, re.M)
+    if since:
+        summary['steps'], summary['wallTime'] = \
+            int(since[-1][0]), float(since[-1][1])
+        summary['runs'] = int(since[-1][2])
+    m = re.findall(r'^Throughput: (\S+) .*\((\d+) points', log, re.M)[-1]
+    summary['throughput'], summary['points'] = float(m[0]), int(m[1])
     # Contact pairs: largest interpenetration in local edge lengths
     pen = [float(x) for x in re.findall(
         r'largest interpenetration (\S+) of the local edge length', log)]

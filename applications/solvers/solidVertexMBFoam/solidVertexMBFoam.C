@@ -43,10 +43,28 @@ int main(int argc, char *argv[])
     #include "createBodies.H"
     #include "createContacts.H"
 
-    runStatistics stats(nPoints, tvdRungeKutta2::nStages);
+    runStatistics stats(runTime, nPoints, tvdRungeKutta2::nStages);
     scalar nextReport = 0;
     const scalar endTime = runTime.endTime().value();
     const scalar startTime = runTime.value();
+
+    // Fields, and the histories a restart carries on
+    auto writeState = [&]()
+    {
+        for (const solidBody& b : bodies)
+        {
+            b.write();
+        }
+        for (const contactPair& c : contacts)
+        {
+            c.write();
+        }
+        for (bodyMonitor& m : monitors)
+        {
+            m.flush();
+        }
+        stats.write(runTime);
+    };
 
     Info<< "Starting time loop" << nl << endl;
 
@@ -79,10 +97,7 @@ int main(int argc, char *argv[])
 
         if (runTime.writeTime())
         {
-            for (const solidBody& b : bodies)
-            {
-                b.write();
-            }
+            writeState();
         }
 
         const scalar progress =
@@ -90,7 +105,7 @@ int main(int argc, char *argv[])
         if (progress >= nextReport || !runTime.run())
         {
             const scalar wall = stats.wallTime();
-            Info<< "t = " << runTime.timeName() << "  step " << stats.nSteps()
+            Info<< "t = " << runTime.timeName() << "  step " << stats.totalSteps()
                 << "  dt " << runTime.deltaTValue()
                 << "  " << label(100*progress + 0.5) << "%"
                 << "  wall " << wall << " s  left "
@@ -113,8 +128,8 @@ int main(int argc, char *argv[])
             Info<< "Body " << b.name() << ": energyStable blended the"
                 << " interior fluxes towards first order in "
                 << b.nEnergyLimitedStages() << " of "
-                << stats.nSteps()*tvdRungeKutta2::nStages
-                << " stages (smallest second-order weight "
+                << stats.totalSteps()*tvdRungeKutta2::nStages
+                << " stages since t = 0 (smallest second-order weight "
                 << b.minEnergyBlending() << ")" << nl;
         }
     }

@@ -6,6 +6,8 @@
 #include "contactPair.H"
 #include "acousticFormulas.H"
 #include "ListListOps.H"
+#include "IOdictionary.H"
+#include "Time.H"
 
 // * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
 
@@ -473,10 +475,41 @@ Foam::contactPair::contactPair
     setSide(B_, bodyB, dict.get<word>("patchB"));
 
     matchSides();
+
+    // A restart carries the history of the earlier runs on
+    IOobject io(stateIO(true));
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        maxPenetration_ = IOdictionary(io).get<scalar>("maxPenetration");
+    }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::IOobject Foam::contactPair::stateIO(const bool read) const
+{
+    const Time& runTime = A_.body->mesh().time();
+    return IOobject
+    (
+        "contactState." + name_, runTime.timeName(), "uniform", runTime,
+        read ? IOobject::MUST_READ : IOobject::NO_READ,
+        IOobject::NO_WRITE, false
+    );
+}
+
+
+void Foam::contactPair::write() const
+{
+    IOdictionary state(stateIO(false));
+    state.add("maxPenetration", maxPenetration_);
+    state.regIOobject::writeObject
+    (
+        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
+        true
+    );
+}
+
 
 void Foam::contactPair::addFluxes()
 {

@@ -6,6 +6,67 @@
 #include "bodyMonitor.H"
 #include "Time.H"
 #include "IOmanip.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include <algorithm>
+
+namespace
+{
+
+// A run stopped or killed after its last write left rows past the time a
+// restart starts from: drop them (keeping the header), so that the
+// restarted run's rows follow on without repeating or mixing times.  The
+// kept rows go to a temporary file that then replaces the original.
+void dropRowsAfter(const Foam::fileName& file, const Foam::scalar t)
+{
+    using namespace Foam;
+    if (!isFile(file))
+    {
+        return;
+    }
+    const scalar tMax = t + 1e-9*mag(t);
+    const fileName tmp(file + ".tmp");
+    label nDropped = 0;
+    {
+        IFstream is(file);
+        OFstream os(tmp);
+        string line;
+        label nColumns = -1;
+        while (is.good() && !is.eof())
+        {
+            is.getLine(line);
+            if (line.empty())
+            {
+                continue;
+            }
+            const label nCommas = std::count(line.begin(), line.end(), ',');
+            if (nColumns < 0)
+            {
+                nColumns = nCommas;
+            }
+            // (A row cut short by the kill has fewer columns)
+            else if
+            (
+                nCommas != nColumns
+             || readScalar(line.substr(0, line.find(','))) > tMax
+            )
+            {
+                ++nDropped;
+                continue;
+            }
+            os << line.c_str() << nl;
+        }
+    }
+    mv(tmp, file);
+    if (nDropped)
+    {
+        Info<< "    restart: dropped " << nDropped << " rows after t = " << t
+            << " from " << file.name() << " (written after the last write"
+            << " time)" << nl;
+    }
+}
+
+}
 
 Foam::bodyMonitor::bodyMonitor(const solidBody& body)
 :
@@ -34,6 +95,11 @@ Foam::bodyMonitor::bodyMonitor(const solidBody& body)
         mkDir(dir);
         // A restart appends to the files of the earlier run
         const bool append = runTime.startTime().value() > 0;
+        if (append)
+        {
+            dropRowsAfter(dir/"energy.csv", runTime.startTime().value());
+            dropRowsAfter(dir/"probes.csv", runTime.startTime().value());
+        }
         energyFile_.reset
         (
             new OFstream
@@ -137,6 +203,16 @@ Foam::scalar Foam::bodyMonitor::write(const scalar t)
     }
 
     return Dnum;
+}
+
+
+void Foam::bodyMonitor::flush()
+{
+    if (energyFile_.valid())
+    {
+        energyFile_().flush();
+        probeFile_().flush();
+    }
 }
 
 

@@ -5,8 +5,65 @@
 
 #include "runStatistics.H"
 #include "IFstream.H"
+#include "IOdictionary.H"
 #include "Pstream.H"
 #include "Ostream.H"
+#include "Time.H"
+
+namespace
+{
+
+Foam::IOobject statisticsIO(const Foam::Time& runTime, const bool read)
+{
+    return Foam::IOobject
+    (
+        "runStatistics", runTime.timeName(), "uniform", runTime,
+        read ? Foam::IOobject::MUST_READ : Foam::IOobject::NO_READ,
+        Foam::IOobject::NO_WRITE, false
+    );
+}
+
+}
+
+
+Foam::runStatistics::runStatistics
+(
+    const Time& runTime,
+    const label nPoints,
+    const label nStages
+)
+:
+    clock_(),
+    nPoints_(nPoints),
+    nStages_(nStages),
+    nSteps_(0),
+    nStepsBefore_(0),
+    wallBefore_(0),
+    nRunsBefore_(0)
+{
+    IOobject io(statisticsIO(runTime, true));
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        const IOdictionary dict(io);
+        nStepsBefore_ = dict.get<label>("steps");
+        wallBefore_ = dict.get<scalar>("wallTime");
+        nRunsBefore_ = dict.get<label>("runs");
+    }
+}
+
+
+void Foam::runStatistics::write(const Time& runTime) const
+{
+    IOdictionary dict(statisticsIO(runTime, false));
+    dict.add("steps", totalSteps());
+    dict.add("wallTime", wallBefore_ + wallTime());
+    dict.add("runs", nRunsBefore_ + 1);
+    dict.regIOobject::writeObject
+    (
+        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
+        true
+    );
+}
 
 Foam::scalar Foam::runStatistics::peakMemory()
 {
@@ -42,6 +99,12 @@ void Foam::runStatistics::report(Ostream& os) const
         << " points, " << nProcs << " cores)" << nl
         << "Peak memory: " << memory/1048576 << " MB, "
         << memory/max(nPoints_, label(1)) << " bytes per point" << nl;
+    if (nRunsBefore_)
+    {
+        os  << "Since t = 0: " << totalSteps() << " steps in "
+            << wallBefore_ + wall << " s wall over " << nRunsBefore_ + 1
+            << " runs (restarted)" << nl;
+    }
 }
 
 

@@ -211,6 +211,9 @@ void Foam::solidBody::readBookkeeping()
         E0_ = state.get<scalar>("initialEnergy");
         Wext_ = state.get<scalar>("externalWork");
         Dplastic_ = state.get<scalar>("plasticDissipation");
+        // (Absent from states written before these were kept)
+        nEnergyLimited_ = state.getOrDefault<label>("energyLimitedStages", 0);
+        minEnergyTheta_ = state.getOrDefault<scalar>("minEnergyBlending", 1);
     }
     else
     {
@@ -1044,6 +1047,8 @@ void Foam::solidBody::write() const
     state.add("initialEnergy", E0_);
     state.add("externalWork", Wext_);
     state.add("plasticDissipation", Dplastic_);
+    state.add("energyLimitedStages", nEnergyLimited_);
+    state.add("minEnergyBlending", minEnergyTheta_);
     state.regIOobject::writeObject
     (
         IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,

@@ -6,8 +6,7 @@
 #include "contactPair.H"
 #include "acousticFormulas.H"
 #include "ListListOps.H"
-#include "IOdictionary.H"
-#include "Time.H"
+#include "uniformStateIO.H"
 
 // * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
 
@@ -477,37 +476,24 @@ Foam::contactPair::contactPair
     matchSides();
 
     // A restart carries the history of the earlier runs on
-    IOobject io(stateIO(true));
-    if (io.typeHeaderOk<IOdictionary>(true))
+    const autoPtr<IOdictionary> state
+    (
+        readUniformState(stateName(), time())
+    );
+    if (state)
     {
-        maxPenetration_ = IOdictionary(io).get<scalar>("maxPenetration");
+        maxPenetration_ = state->get<scalar>("maxPenetration");
     }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::IOobject Foam::contactPair::stateIO(const bool read) const
-{
-    const Time& runTime = A_.body->mesh().time();
-    return IOobject
-    (
-        "contactState." + name_, runTime.timeName(), "uniform", runTime,
-        read ? IOobject::MUST_READ : IOobject::NO_READ,
-        IOobject::NO_WRITE, false
-    );
-}
-
-
 void Foam::contactPair::write() const
 {
-    IOdictionary state(stateIO(false));
+    dictionary state;
     state.add("maxPenetration", maxPenetration_);
-    state.regIOobject::writeObject
-    (
-        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
-        true
-    );
+    writeUniformState(stateName(), time(), state);
 }
 
 

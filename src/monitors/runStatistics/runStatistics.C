@@ -5,25 +5,9 @@
 
 #include "runStatistics.H"
 #include "IFstream.H"
-#include "IOdictionary.H"
+#include "uniformStateIO.H"
 #include "Pstream.H"
 #include "Ostream.H"
-#include "Time.H"
-
-namespace
-{
-
-Foam::IOobject statisticsIO(const Foam::Time& runTime, const bool read)
-{
-    return Foam::IOobject
-    (
-        "runStatistics", runTime.timeName(), "uniform", runTime,
-        read ? Foam::IOobject::MUST_READ : Foam::IOobject::NO_READ,
-        Foam::IOobject::NO_WRITE, false
-    );
-}
-
-}
 
 
 Foam::runStatistics::runStatistics
@@ -41,28 +25,26 @@ Foam::runStatistics::runStatistics
     wallBefore_(0),
     nRunsBefore_(0)
 {
-    IOobject io(statisticsIO(runTime, true));
-    if (io.typeHeaderOk<IOdictionary>(true))
+    const autoPtr<IOdictionary> dict
+    (
+        readUniformState("runStatistics", runTime)
+    );
+    if (dict)
     {
-        const IOdictionary dict(io);
-        nStepsBefore_ = dict.get<label>("steps");
-        wallBefore_ = dict.get<scalar>("wallTime");
-        nRunsBefore_ = dict.get<label>("runs");
+        nStepsBefore_ = dict->get<label>("steps");
+        wallBefore_ = dict->get<scalar>("wallTime");
+        nRunsBefore_ = dict->get<label>("runs");
     }
 }
 
 
 void Foam::runStatistics::write(const Time& runTime) const
 {
-    IOdictionary dict(statisticsIO(runTime, false));
+    dictionary dict;
     dict.add("steps", totalSteps());
     dict.add("wallTime", wallBefore_ + wallTime());
     dict.add("runs", nRunsBefore_ + 1);
-    dict.regIOobject::writeObject
-    (
-        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
-        true
-    );
+    writeUniformState("runStatistics", runTime, dict);
 }
 
 Foam::scalar Foam::runStatistics::peakMemory()

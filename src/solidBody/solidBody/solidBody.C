@@ -6,6 +6,7 @@
 #include "solidBody.H"
 #include "Time.H"
 #include "pointFieldIO.H"
+#include "uniformStateIO.H"
 #include "emptyPolyPatch.H"
 #include "syncTools.H"
 #include "tensorCross.H"
@@ -200,20 +201,16 @@ void Foam::solidBody::readState()
 
 void Foam::solidBody::readBookkeeping()
 {
-    IOobject io
-    (
-        "bodyState", runTime_.timeName(), "uniform", mesh_,
-        IOobject::MUST_READ, IOobject::NO_WRITE, false
-    );
-    if (io.typeHeaderOk<IOdictionary>(true))
+    const autoPtr<IOdictionary> state(readUniformState("bodyState", mesh_));
+    if (state)
     {
-        const IOdictionary state(io);
-        E0_ = state.get<scalar>("initialEnergy");
-        Wext_ = state.get<scalar>("externalWork");
-        Dplastic_ = state.get<scalar>("plasticDissipation");
+        E0_ = state->get<scalar>("initialEnergy");
+        Wext_ = state->get<scalar>("externalWork");
+        Dplastic_ = state->get<scalar>("plasticDissipation");
         // (Absent from states written before these were kept)
-        nEnergyLimited_ = state.getOrDefault<label>("energyLimitedStages", 0);
-        minEnergyTheta_ = state.getOrDefault<scalar>("minEnergyBlending", 1);
+        nEnergyLimited_ =
+            state->getOrDefault<label>("energyLimitedStages", 0);
+        minEnergyTheta_ = state->getOrDefault<scalar>("minEnergyBlending", 1);
     }
     else
     {
@@ -1036,24 +1033,13 @@ void Foam::solidBody::write() const
     material_->writeState(mesh_);
 
     // Energy bookkeeping for restarts
-    IOdictionary state
-    (
-        IOobject
-        (
-            "bodyState", runTime_.timeName(), "uniform", mesh_,
-            IOobject::NO_READ, IOobject::NO_WRITE, false
-        )
-    );
+    dictionary state;
     state.add("initialEnergy", E0_);
     state.add("externalWork", Wext_);
     state.add("plasticDissipation", Dplastic_);
     state.add("energyLimitedStages", nEnergyLimited_);
     state.add("minEnergyBlending", minEnergyTheta_);
-    state.regIOobject::writeObject
-    (
-        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
-        true
-    );
+    writeUniformState("bodyState", mesh_, state);
 }
 
 

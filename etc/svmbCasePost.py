@@ -6,7 +6,7 @@ parts B and C).  Run in a case directory after solidVertexMBFoam:
                     [--contact-patch name] [--plane-strain x|y|z]
 
 Reads every body's postProcessing/<body>/{energy,probes}.csv, the written
-time directories (ASCII point fields) and log.solidVertexMBFoam, and writes
+time directories (ASCII point fields) and their uniform/ files, and writes
 
   results/energy.csv     t, kinetic, strain, plastic, externalWork,
                          numericalDissipation summed over the bodies
@@ -133,7 +133,8 @@ def written_times():
             t = float(d)
         except ValueError:
             continue
-        if t > 0 and os.path.isdir(d):
+        # (only directories the solver completed)
+        if t > 0 and os.path.isfile(os.path.join(d, 'uniform', 'time')):
             times.append((t, d))
     return [d for t, d in sorted(times)]
 
@@ -353,25 +354,13 @@ def main():
         summary['planeStrainMismatch'] = plane_strain_mismatch(
             names, X, 'xyz'.index(args.plane_strain))
 
-    # Run statistics
-    log = open('log.solidVertexMBFoam').read()
-    # (A restarted run appends to the log: its last report counts since
-    # t = 0, over all runs; throughput is that of the last run)
-    m = re.findall(r'^Finished (\d+) steps in (\S+) s wall', log, re.M)[-1]
-    summary['steps'], summary['wallTime'] = int(m[0]), float(m[1])
-    since = re.findall(
-        r'^Since t = 0: (\d+) steps in (\S+) s wall over (\d+) runs', log, re.M)
-    if since:
-        summary['steps'], summary['wallTime'] = \
-            int(since[-1][0]), float(since[-1][1])
-        summary['runs'] = int(since[-1][2])
-    m = re.findall(r'^Throughput: (\S+) .*\((\d+) points', log, re.M)[-1]
-    summary['throughput'], summary['points'] = float(m[0]), int(m[1])
-    # Contact pairs: largest interpenetration in local edge lengths
-    pen = [float(x) for x in re.findall(
-        r'largest interpenetration (\S+) of the local edge length', log)]
-    if pen:
-        summary['maxInterpenetration'] = max(pen)
+    # Run statistics: from the newest complete time directory's uniform/
+    # files (a restarted run's steps and wall time count since t = 0)
+    stats = svmbPost.run_statistics()
+    for k in ('steps', 'wallTime', 'runs', 'throughput', 'points'):
+        summary[k] = stats[k]
+    if 'maxInterpenetration' in stats:
+        summary['maxInterpenetration'] = stats['maxInterpenetration']
 
     if args.taylor_bar:
         pr = svmbPost.read_csv('postProcessing/region0/probes.csv')

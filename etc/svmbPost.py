@@ -1,7 +1,12 @@
 """Post-processing helpers shared by tutorials and tests (one place):
-reading OpenFOAM ASCII point fields and mesh points, reading the solver's
-CSV monitors.  Import with  sys.path.insert(0, os.environ['SVMB_PROJECT'] + '/etc')."""
+reading OpenFOAM point fields and mesh points (ASCII or binary), the
+solver's CSV monitors, and the figures it writes with every complete time
+directory (<time>/uniform/runStatistics, contactState.<pair>).  Figures come
+from these files, never from the wording of the log.
+Import with  sys.path.insert(0, os.environ['SVMB_PROJECT'] + '/etc')."""
+import os
 import re
+import sys
 import numpy as np
 
 _NUM = r'[-+0-9.eE]+'
@@ -9,7 +14,15 @@ _NUM = r'[-+0-9.eE]+'
 
 def read_points(path):
     """Mesh points (N x 3) from constant/[region/]polyMesh/points."""
-    return read_vector_list(open(path).read())
+    raw = open(path, 'rb').read()
+    head = raw[:raw.index(b'}') + 1]
+    if re.search(rb'format\s+binary', head):
+        body = raw[len(head):]
+        m = re.search(rb'\n\s*(\d+)\s*\n?\s*\(', body)
+        n = int(m.group(1))
+        return np.frombuffer(body[m.end():m.end() + 24 * n],
+                             dtype=np.float64).reshape(n, 3).copy()
+    return read_vector_list(raw.decode())
 
 
 def read_vector_list(text, start_key=None):
@@ -38,6 +51,66 @@ def read_point_field(path):
     if kind == 'scalar':
         return np.array(body.split(), dtype=float)
     return np.array(re.findall(_NUM, body), dtype=float).reshape(n, -1)
+
+
+def fail(tool, message):
+    """Stop post-processing with a clear message (never a wrong number)."""
+    sys.exit('%s: %s' % (tool, message))
+
+
+def complete_times(case='.'):
+    """Time directories the solver completed (uniform/time written last),
+    oldest first; of processor0 for an undecomposed-but-parallel case."""
+    root = case
+    if not any(os.path.isfile(os.path.join(case, d, 'uniform', 'time'))
+               for d in os.listdir(case)) \
+            and os.path.isdir(os.path.join(case, 'processor0')):
+        root = os.path.join(case, 'processor0')
+    out = []
+    for d in os.listdir(root):
+        try:
+            t = float(d)
+        except ValueError:
+            continue
+        if os.path.isfile(os.path.join(root, d, 'uniform', 'time')):
+            out.append((t, os.path.join(root, d)))
+    return [p for t, p in sorted(out)]
+
+
+def read_dict(path):
+    """Scalar entries of a small OpenFOAM dictionary (uniform/ files)."""
+    text = open(path).read()
+    text = text[text.index('}', text.index('FoamFile')) + 1:]
+    out = {}
+    for key, value in re.findall(r'^\s*(\w[\w.]*)\s+([^;{}]+);', text, re.M):
+        try:
+            out[key] = float(value)
+        except ValueError:
+            out[key] = value.strip()
+    return out
+
+
+def run_statistics(case='.'):
+    """Figures of the run up to the newest complete time: steps and
+    wallTime since t = 0, runs; points, cores, throughput, peakMemory of
+    the last run; maxInterpenetration over the contact pairs (if any)."""
+    times = complete_times(case)
+    if not times:
+        fail('svmbPost', 'no complete time directory in %s: did the run '
+             'write anything?' % os.path.abspath(case))
+    uniform = os.path.join(times[-1], 'uniform')
+    stats = read_dict(os.path.join(uniform, 'runStatistics'))
+    out = {'time': float(os.path.basename(times[-1]))}
+    for k in ('steps', 'runs', 'points', 'cores'):
+        out[k] = int(stats[k])
+    for k in ('wallTime', 'throughput', 'peakMemory'):
+        out[k] = float(stats[k])
+    pen = [read_dict(os.path.join(uniform, f))['maxPenetration']
+           for f in sorted(os.listdir(uniform))
+           if f.startswith('contactState.')]
+    if pen:
+        out['maxInterpenetration'] = max(pen)
+    return out
 
 
 def read_csv(path):

@@ -15,13 +15,22 @@ Description
     body is described by constant/<body>/solidProperties (see solidBody.H);
     contact pairs between bodies by constant/contactProperties (see
     contactPair.H).
-    system/controlDict: endTime, writeControl (adjustableRunTime), and
-        cfl     0.3;        // time step = cfl h_min / U_max
+    system/controlDict: see solverTime.H (endTime, writeControl,
+    writeInterval, cfl: time step = cfl h_min / U_max).
+
+    Restart: a run starts from the newest complete time directory
+    (startFrom latestTime) and reads every field it needs from it; each
+    write marks its directory complete last (timeDirectory.H).  The end
+    time is always written.  A numerical failure writes the last good
+    state (if this run computed one) and stops saying where and when.
 
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
-#include "Time.H"
+#include "sigFpe.H"
+#include "solverTime.H"
+#include "timeDirectory.H"
+#include "checkedInput.H"
 #include "regionProperties.H"
 #include "runStatistics.H"
 #include "solidBody.H"
@@ -39,7 +48,15 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
-    #include "createTime.H"
+
+    // The solver checks its state at every stage (J, det F, momentum
+    // finite) and stops with where and when after writing the last good
+    // state; a trapped floating-point exception would end the run with
+    // neither
+    sigFpe::unset();
+
+    solverTime runTime(args);
+
     #include "createBodies.H"
     #include "createContacts.H"
 
@@ -47,10 +64,16 @@ int main(int argc, char *argv[])
     scalar nextReport = 0;
     const scalar endTime = runTime.endTime().value();
     const scalar startTime = runTime.value();
+    label stepsThisRun = 0;
+    label lastWriteIndex = runTime.timeIndex();
 
-    // Fields, and the histories a restart carries on
+    #include "checkTimes.H"
+
+    // Fields, and the histories a restart carries on.  The directory is
+    // complete only when its marker is written last (timeDirectory.H)
     auto writeState = [&]()
     {
+        timeDirectory::beginWrite(runTime);
         for (const solidBody& b : bodies)
         {
             b.write();
@@ -64,26 +87,34 @@ int main(int argc, char *argv[])
             m.flush();
         }
         stats.write(runTime);
+        timeDirectory::endWrite(runTime);
+        lastWriteIndex = runTime.timeIndex();
     };
 
     Info<< "Starting time loop" << nl << endl;
 
     while (runTime.run())
     {
-        const scalar dt = min
-        (
-            tvdRungeKutta2::stableDeltaT(bodies, contacts, cfl),
-            endTime - runTime.value()
-        );
-        runTime.setDeltaT(dt);
         const scalar t0 = runTime.value();
+        const scalar dt = runTime.limitToWriteTime
+        (
+            min
+            (
+                tvdRungeKutta2::stableDeltaT(bodies, contacts, cfl),
+                endTime - t0
+            )
+        );
+        #include "checkDeltaT.H"
+        runTime.setDeltaT(dt, false);
         ++runTime;
 
         const label failed =
             tvdRungeKutta2::step(bodies, contacts, t0, runTime.deltaTValue());
-        stats.step();
 
         #include "checkState.H"
+
+        stats.step();
+        ++stepsThisRun;
 
         for (solidBody& b : bodies)
         {
@@ -95,14 +126,17 @@ int main(int argc, char *argv[])
             monitors[b].write(runTime.value());
         }
 
-        if (runTime.writeTime())
+        // The end time is always written, whatever the write interval
+        const bool last =
+            !(runTime.value() < endTime - 0.5*runTime.deltaTValue());
+        if (runTime.writeTime() || last)
         {
             writeState();
         }
 
         const scalar progress =
             (runTime.value() - startTime)/max(endTime - startTime, VSMALL);
-        if (progress >= nextReport || !runTime.run())
+        if (progress >= nextReport || last)
         {
             const scalar wall = stats.wallTime();
             Info<< "t = " << runTime.timeName() << "  step " << stats.totalSteps()

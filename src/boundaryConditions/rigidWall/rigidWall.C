@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "rigidWall.H"
+#include "checkedInput.H"
 #include "acousticFormulas.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -25,9 +26,9 @@ Foam::solidBoundaryConditions::rigidWall::rigidWall
 )
 :
     solidBoundaryCondition(dual, patchi, dict),
-    point_(dict.get<point>("point")),
-    normal_(dict.get<vector>("normal")),
-    velocity_(dict.getOrDefault<vector>("velocity", Zero)),
+    point_(getFinite<point>(dict, "point")),
+    normal_(getFinite<vector>(dict, "normal")),
+    velocity_(getFiniteOrDefault<vector>(dict, "velocity", Zero)),
     friction_(dict, "patch '" + patchName() + "'")
 {
     if (mag(normal_) < SMALL)

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidBoundaryCondition.H"
+#include "checkedInput.H"
 #include "syncTools.H"
 #include "unitConversion.H"
 
@@ -81,7 +82,9 @@ Foam::autoPtr<Foam::solidBoundaryCondition> Foam::solidBoundaryCondition::New
             << exit(FatalIOError);
     }
 
-    return autoPtr<solidBoundaryCondition>(cstrIter()(dual, patchi, dict));
+    autoPtr<solidBoundaryCondition> bc(cstrIter()(dual, patchi, dict));
+    checkKeywords(dict, bc->keywords());
+    return bc;
 }
 
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "traction.H"
+#include "checkedInput.H"
 #include "acousticFormulas.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -35,7 +36,17 @@ Foam::solidBoundaryConditions::traction::traction
             new Function1Types::Constant<vector>("traction", Zero)
         )
     )
-{}
+{
+    // A value that overflows the fluxes would stop the run much later
+    if (!finiteInput(traction_->value(0)))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'traction' of patch '" << patchName() << "' is "
+            << traction_->value(0) << " at t = 0: not a finite vector of"
+            << " magnitude at most " << maxInputMagnitude
+            << exit(FatalIOError);
+    }
+}
 
 
 void Foam::solidBoundaryConditions::traction::contactState

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "velocity.H"
+#include "checkedInput.H"
 #include "acousticFormulas.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -27,7 +28,17 @@ Foam::solidBoundaryConditions::velocity::velocity
     solidBoundaryCondition(dual, patchi, dict)
 ,
     velocity_(Function1<vector>::New("velocity", dict))
-{}
+{
+    // A value that overflows the fluxes would stop the run much later
+    if (!finiteInput(velocity_->value(0)))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'velocity' of patch '" << patchName() << "' is "
+            << velocity_->value(0) << " at t = 0: not a finite vector of"
+            << " magnitude at most " << maxInputMagnitude
+            << exit(FatalIOError);
+    }
+}
 
 
 void Foam::solidBoundaryConditions::velocity::contactState

@@ -7,6 +7,8 @@
 #include "acousticFormulas.H"
 #include "ListListOps.H"
 #include "uniformStateIO.H"
+#include "checkedInput.H"
+#include "timeDirectory.H"
 
 // * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
 
@@ -122,6 +124,96 @@ void Foam::contactPair::setSide
 }
 
 
+void Foam::contactPair::checkFacing() const
+{
+    // The patches' total area vectors (reference configuration): contact
+    // surfaces face each other, so these point in opposite directions
+    auto areaVector = [](const contactSide& side)
+    {
+        vector S(Zero);
+        const dualMesh::patchSubFaces& sf =
+            side.body->dual().subFaces(side.patchi);
+        for (const vector& a : sf.area)
+        {
+            S += a;
+        }
+        return returnReduce(S, sumOp<vector>());
+    };
+    const vector SA(areaVector(A_)), SB(areaVector(B_));
+    const scalar cosine = (SA & SB)/max(mag(SA)*mag(SB), VSMALL);
+    if (cosine > 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Contact pair '" << name_ << "': patch "
+            << sideName(A_) << " (mean normal " << normalised(SA)
+            << ") and patch " << sideName(B_) << " (mean normal "
+            << normalised(SB) << ") face the same way." << nl
+            << "    Contact surfaces face each other: check patchA and"
+            << " patchB." << exit(FatalIOError);
+    }
+}
+
+
+void Foam::contactPair::checkOverlap() const
+{
+    const List<pointData> a(gatherData(A_));
+    const List<pointData> b(gatherData(B_));
+    const label offsetA = localOffset(A_.points.size());
+
+    scalar worst = 0;
+    point where(Zero);
+    forAll(A_.points, i)
+    {
+        const pointData& da = a[offsetA + i];
+        const pointData& db = b[A_.partner[i]];
+        const scalar gap =
+            (dataVec(db, 0) - dataVec(da, 0))
+          & gapDirection(pairNormal(da, db));
+        if (gap/da[13] < worst)
+        {
+            worst = gap/da[13];
+            where = dataVec(da, 0);
+        }
+    }
+    const scalar globalWorst = returnReduce(worst, minOp<scalar>());
+    if (globalWorst < -overlapTolerance)
+    {
+        if (worst != globalWorst)
+        {
+            where = point(-GREAT, -GREAT, -GREAT);
+        }
+        reduce(where, maxOp<point>());
+        FatalIOErrorInFunction(dict_)
+            << "Contact pair '" << name_ << "': at the start the bodies"
+            << " overlap by " << -globalWorst << " of the local edge length"
+            << " at " << where << " (patch " << sideName(A_) << ")." << nl
+            << "    The tolerance is " << overlapTolerance << ": move the"
+            << " bodies apart (a gap of 0 or more) and mesh again."
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::word Foam::contactPair::sideName(const contactSide& side)
+{
+    return side.body->name() + "/"
+        + side.body->mesh().boundaryMesh()[side.patchi].name();
+}
+
+
+Foam::word Foam::contactPair::sharedPatch(const contactPair& other) const
+{
+    for (const contactSide* s : {&A_, &B_})
+    {
+        if (other.uses(*s->body, s->patchi))
+        {
+            return sideName(*s);
+        }
+    }
+    return word::null;
+}
+
+
 void Foam::contactPair::matchSides()
 {
     const pointField& XA = A_.body->mesh().points();
@@ -168,7 +260,16 @@ void Foam::contactPair::matchSides()
                     << " (nearest tangential distance " << best << ")."
                     << nl << "Matching (conforming) contact meshes are"
                     << " needed: mesh both patches with the same surface"
-                    << " mesh." << exit(FatalIOError);
+                    << " mesh."
+                    << (
+                           magSqr(matchDirection_) > 0 ? "" :
+                           "\n    Partners are searched along the normals of"
+                           " patchA. If the two surface meshes are copies"
+                           " of each other shifted along one direction"
+                           " (curved faces such as two rings), set"
+                           " matchDirection to that direction."
+                       )
+                    << exit(FatalIOError);
             }
             partner[i] = ibest;
         }
@@ -435,9 +536,17 @@ Foam::contactPair::contactPair
     dict_(dict),
     riemann_(contactRiemannSolver::New(dict)),
     friction_(dict, "contact pair '" + name + "'"),
-    matchDirection_(dict.getOrDefault<vector>("matchDirection", Zero)),
+    matchDirection_(getFiniteOrDefault<vector>(dict, "matchDirection", Zero)),
     maxPenetration_(0)
 {
+    checkKeywords
+    (
+        dict,
+        {
+            "bodyA", "patchA", "bodyB", "patchB", "riemannSolver", "s",
+            "friction", "matchDirection"
+        }
+    );
     auto findBody = [&](const word& key) -> solidBody&
     {
         const word bodyName(dict.get<word>(key));
@@ -470,19 +579,32 @@ Foam::contactPair::contactPair
 
     solidBody& bodyA = findBody("bodyA");
     solidBody& bodyB = findBody("bodyB");
+    if (&bodyA == &bodyB)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Contact pair '" << name << "': bodyA and bodyB are both '"
+            << bodyA.name() << "'. A pair joins two different bodies"
+            << " (contact of a body with itself is not supported)."
+            << exit(FatalIOError);
+    }
     setSide(A_, bodyA, dict.get<word>("patchA"));
     setSide(B_, bodyB, dict.get<word>("patchB"));
 
+    checkFacing();
     matchSides();
+    if (!timeDirectory::isRestart(time()))
+    {
+        checkOverlap();
+    }
 
     // A restart carries the history of the earlier runs on
-    const autoPtr<IOdictionary> state
-    (
-        readUniformState(stateName(), time())
-    );
-    if (state)
+    if (timeDirectory::isRestart(time()))
     {
-        maxPenetration_ = state->get<scalar>("maxPenetration");
+        const autoPtr<IOdictionary> state
+        (
+            readUniformState(stateName(), time())
+        );
+        maxPenetration_ = readUniformEntry<scalar>(*state, "maxPenetration");
     }
 }
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dualMesh.H"
+#include "Time.H"
 #include "polyMesh.H"
 #include "coupledPolyPatch.H"
 
@@ -66,6 +67,52 @@ inline bool lexLess(const Foam::point& p, const Foam::point& q)
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dualMesh::checkCells() const
+{
+    // An inverted cell would enter the dual with negative sub-volumes (the
+    // run then creates energy) and a flat one divides by zero: stop with
+    // the first such cell.  Flat means below 1e-12 of the mean volume.
+    const scalarField& V = mesh_.cellVolumes();
+    const scalar meanV =
+        returnReduce(sum(mag(V)), sumOp<scalar>())
+       /max(returnReduce(V.size(), sumOp<label>()), label(1));
+    label bad = -1;
+    forAll(V, celli)
+    {
+        if (!(V[celli] > 1e-12*meanV))
+        {
+            bad = celli;
+            break;
+        }
+    }
+    if (returnReduce(bad < 0, andOp<bool>()))
+    {
+        return;
+    }
+    if (bad >= 0)
+    {
+        point centre(Zero);
+        const labelList& cPoints = mesh_.cellPoints()[bad];
+        for (const label pointi : cPoints)
+        {
+            centre += mesh_.points()[pointi];
+        }
+        centre /= max(cPoints.size(), label(1));
+        FatalErrorInFunction
+            << "Cell " << bad << " of the mesh "
+            << mesh_.time().path()/mesh_.facesInstance()/mesh_.meshDir()
+            << (Pstream::parRun() ? " (this processor's numbering)" : "")
+            << " at " << centre << " has volume " << V[bad]
+            << (V[bad] < -1e-12*meanV ? " (inverted)" : " (flat)")
+            << "; mean cell volume " << meanV << nl
+            << "    Fix the mesh (checkMesh lists its faults)."
+            << exit(FatalError);
+    }
+    // (Other processors go on to the next collective operation, where the
+    // reporting processor's abort ends them)
+}
+
 
 void Foam::dualMesh::calcCellContributions()
 {
@@ -313,6 +360,7 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
         length_[edgeEnd_[e]] = min(length_[edgeEnd_[e]], l);
     }
 
+    checkCells();
     calcCellContributions();
     calcBoundarySubFaces();
     synchronise();
@@ -326,7 +374,8 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
             FatalErrorInFunction
                 << "Control volume of point " << i << " at "
                 << X[i] << " is " << volume_[i] << " (not positive)."
-                << nl << "    The mesh " << mesh.objectPath()
+                << nl << "    The mesh "
+                << mesh.time().path()/mesh.facesInstance()/mesh.meshDir()
                 << " has inverted or badly distorted cells: run checkMesh."
                 << exit(FatalError);
         }

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "materialModel.H"
+#include "checkedInput.H"
 
 namespace Foam
 {
@@ -21,7 +22,7 @@ Foam::scalar Foam::materialModel::readPositive
     const bool allowZero
 )
 {
-    const scalar value = dict.get<scalar>(key);
+    const scalar value = getFinite<scalar>(dict, key);
     if (value < 0 || (!allowZero && value == 0))
     {
         FatalIOErrorInFunction(dict)
@@ -59,7 +60,7 @@ Foam::materialModel::materialModel
     if (byE)
     {
         const scalar E = readPositive(dict, "E");
-        const scalar nu = dict.get<scalar>("nu");
+        const scalar nu = getFinite<scalar>(dict, "nu");
         if (nu <= -1 || nu >= 0.5)
         {
             FatalIOErrorInFunction(dict)
@@ -77,6 +78,13 @@ Foam::materialModel::materialModel
 
     if (hugoniot_)
     {
+        if (!dict.isDict("hugoniot"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'hugoniot' must be a dictionary: hugoniot"
+                << " { s 1.5; }" << exit(FatalIOError);
+        }
+        checkKeywords(dict.subDict("hugoniot"), {"s"});
         s_ = readPositive(dict.subDict("hugoniot"), "s", true);
     }
 }
@@ -103,7 +111,9 @@ Foam::autoPtr<Foam::materialModel> Foam::materialModel::New
             << exit(FatalIOError);
     }
 
-    return autoPtr<materialModel>(cstrIter()(dict, nPoints));
+    autoPtr<materialModel> model(cstrIter()(dict, nPoints));
+    checkKeywords(dict, model->keywords());
+    return model;
 }
 
 

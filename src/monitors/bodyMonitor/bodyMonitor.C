@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "bodyMonitor.H"
+#include "checkedInput.H"
+#include "timeDirectory.H"
 #include "Time.H"
 #include "IOmanip.H"
 #include "IFstream.H"
@@ -76,8 +78,9 @@ Foam::bodyMonitor::bodyMonitor(const solidBody& body)
 {
     if (body.dict().found("probes"))
     {
-        probeLocations_ =
-            body.dict().subDict("probes").get<pointField>("locations");
+        const dictionary& probes = body.dict().subDict("probes");
+        checkKeywords(probes, {"locations"});
+        probeLocations_ = probes.get<pointField>("locations");
     }
     probePoints_.setSize(probeLocations_.size());
     forAll(probeLocations_, k)
@@ -85,16 +88,16 @@ Foam::bodyMonitor::bodyMonitor(const solidBody& body)
         probePoints_[k] = body.findPoint(probeLocations_[k]);
     }
 
+    // A restart appends to the files of the earlier run (collective check)
+    const Time& runTime = body.mesh().time();
+    const bool append = timeDirectory::isRestart(runTime);
     if (Pstream::master())
     {
-        const Time& runTime = body.mesh().time();
         const fileName dir
         (
             runTime.globalPath()/"postProcessing"/body.name()
         );
         mkDir(dir);
-        // A restart appends to the files of the earlier run
-        const bool append = runTime.startTime().value() > 0;
         if (append)
         {
             dropRowsAfter(dir/"energy.csv", runTime.startTime().value());

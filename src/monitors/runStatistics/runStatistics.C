@@ -6,6 +6,7 @@
 #include "runStatistics.H"
 #include "IFstream.H"
 #include "uniformStateIO.H"
+#include "timeDirectory.H"
 #include "Pstream.H"
 #include "Ostream.H"
 
@@ -25,15 +26,15 @@ Foam::runStatistics::runStatistics
     wallBefore_(0),
     nRunsBefore_(0)
 {
-    const autoPtr<IOdictionary> dict
-    (
-        readUniformState("runStatistics", runTime)
-    );
-    if (dict)
+    if (timeDirectory::isRestart(runTime))
     {
-        nStepsBefore_ = dict->get<label>("steps");
-        wallBefore_ = dict->get<scalar>("wallTime");
-        nRunsBefore_ = dict->get<label>("runs");
+        const autoPtr<IOdictionary> dict
+        (
+            readUniformState("runStatistics", runTime)
+        );
+        nStepsBefore_ = readUniformEntry<label>(*dict, "steps");
+        wallBefore_ = readUniformEntry<scalar>(*dict, "wallTime");
+        nRunsBefore_ = readUniformEntry<label>(*dict, "runs");
     }
 }
 
@@ -44,6 +45,16 @@ void Foam::runStatistics::write(const Time& runTime) const
     dict.add("steps", totalSteps());
     dict.add("wallTime", wallBefore_ + wallTime());
     dict.add("runs", nRunsBefore_ + 1);
+    // Of this run so far (post-processing reads these, not the log)
+    const scalar wall = max(wallTime(), scalar(1e-9));
+    dict.add("points", nPoints_);
+    dict.add("cores", Pstream::nProcs());
+    dict.add
+    (
+        "throughput",
+        scalar(nSteps_)*nStages_*nPoints_/wall/Pstream::nProcs()
+    );
+    dict.add("peakMemory", returnReduce(peakMemory(), sumOp<scalar>()));
     writeUniformState("runStatistics", runTime, dict);
 }
 

@@ -7,37 +7,16 @@
 #include "Time.H"
 #include "pointFieldIO.H"
 #include "uniformStateIO.H"
+#include "timeDirectory.H"
+#include "checkedInput.H"
 #include "emptyPolyPatch.H"
 #include "syncTools.H"
 #include "tensorCross.H"
 #include "acousticFormulas.H"
 #include "greenGauss.H"
 #include "vector2D.H"
-
-// * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-// FatalIOError for any keyword of dict not in the allowed list
-void checkKeywords(const dictionary& dict, const wordList& allowed)
-{
-    for (const entry& e : dict)
-    {
-        if (!allowed.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << e.keyword() << "'" << nl
-                << "Allowed keywords: " << flatOutput(allowed)
-                << exit(FatalIOError);
-        }
-    }
-}
-
-} // End anonymous namespace
-
+#include "IFstream.H"
+#include "IStringStream.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -80,6 +59,53 @@ void Foam::solidBody::readScheme()
 }
 
 
+void Foam::solidBody::checkDecomposition() const
+{
+    // processor*/ directories left from another mesh would run silently on
+    // that mesh: compare the decomposed cell count with the undecomposed
+    // mesh's (from the 'note' of its owner file header)
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    label nCells = -1;
+    const fileName owner
+    (
+        runTime_.globalPath()/runTime_.constant()
+       /(name_ == polyMesh::defaultRegion ? word::null : name_)
+       /polyMesh::meshSubDir/"owner"
+    );
+    if (Pstream::master() && isFile(owner))
+    {
+        IFstream is(owner);
+        string line;
+        for (label n = 0; n < 30 && is.good(); ++n)
+        {
+            is.getLine(line);
+            const auto pos = line.find("nCells:");
+            if (pos != string::npos)
+            {
+                IStringStream ss(line.substr(pos + 7));
+                ss >> nCells;
+                break;
+            }
+        }
+    }
+    Pstream::scatter(nCells);
+    const label nDecomposed = returnReduce(mesh_.nCells(), sumOp<label>());
+    if (nCells >= 0 && nCells != nDecomposed)
+    {
+        FatalErrorInFunction
+            << "Body " << name_ << ": the decomposed mesh in processor*/ has "
+            << nDecomposed << " cells, the mesh in " << owner.path()
+            << " has " << nCells << ": the processor directories are stale."
+            << nl << "    Decompose again: decomposePar -force"
+            << (name_ == polyMesh::defaultRegion ? "" : " -allRegions")
+            << exit(FatalError);
+    }
+}
+
+
 void Foam::solidBody::createBoundaryConditions()
 {
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
@@ -96,7 +122,19 @@ void Foam::solidBody::createBoundaryConditions()
 
     for (const entry& e : bcDict)
     {
-        if (!e.isDict() || patches.findPatchID(e.keyword()) < 0)
+        if (!e.isDict() && patches.findPatchID(e.keyword()) >= 0)
+        {
+            FatalIOErrorInFunction(bcDict)
+                << "The boundary condition of patch '" << e.keyword()
+                << "' of body '" << name_ << "' must be a dictionary: "
+                << e.keyword() << " { type "
+                << (e.stream().size() ? e.stream()[0] : token(word("traction")))
+                << "; }" << nl << "Types: "
+                << flatOutput(solidBoundaryCondition::
+                   dictionaryConstructorTablePtr_->sortedToc())
+                << exit(FatalIOError);
+        }
+        if (patches.findPatchID(e.keyword()) < 0)
         {
             FatalIOErrorInFunction(bcDict)
                 << "Boundary condition for '" << e.keyword()
@@ -151,24 +189,25 @@ void Foam::solidBody::createBoundaryConditions()
 void Foam::solidBody::readState()
 {
     const label nPts = mesh_.nPoints();
-    const scalar rho = material_->rho();
+    const bool restart = timeDirectory::isRestart(runTime_);
 
+    // A restart reads every field it needs (or stops naming the file).  A
+    // fresh run reads the fields the user put in the start directory and
+    // takes the initial conditions of solidProperties for the others
     lm_.setSize(nPts);
-    if (!readPointField(mesh_, "lm", lm_))
-    {
-        lm_ = rho*dict_.getOrDefault<vector>("initialVelocity", Zero);
-    }
-
     u_.setSize(nPts, Zero);
-    readPointField(mesh_, "u", u_);
-
     F_.setSize(nPts, tensor::I);
-    readPointField(mesh_, "F", F_);
+    if (!readPointFieldIfPresent(mesh_, "lm", lm_, restart))
+    {
+        lm_ = material_->rho()*initialVelocity_;
+    }
+    readPointFieldIfPresent(mesh_, "u", u_, restart);
+    readPointFieldIfPresent(mesh_, "F", F_, restart);
 
     if (HLaw_)
     {
         H_.setSize(nPts);
-        if (!readPointField(mesh_, "H", H_))
+        if (!readPointFieldIfPresent(mesh_, "H", H_, restart))
         {
             forAll(H_, i)
             {
@@ -184,7 +223,7 @@ void Foam::solidBody::readState()
     if (JLaw_)
     {
         J_.setSize(nPts);
-        if (!readPointField(mesh_, "J", J_))
+        if (!readPointFieldIfPresent(mesh_, "J", J_, restart))
         {
             forAll(J_, i)
             {
@@ -196,25 +235,42 @@ void Foam::solidBody::readState()
     {
         Jc_.setSize(nPts);
     }
+
+    if (restart)
+    {
+        material_->readState(mesh_);
+    }
 }
 
 
 void Foam::solidBody::readBookkeeping()
 {
-    const autoPtr<IOdictionary> state(readUniformState("bodyState", mesh_));
-    if (state)
+    if (timeDirectory::isRestart(runTime_))
     {
-        E0_ = state->get<scalar>("initialEnergy");
-        Wext_ = state->get<scalar>("externalWork");
-        Dplastic_ = state->get<scalar>("plasticDissipation");
-        // (Absent from states written before these were kept)
+        const autoPtr<IOdictionary> state
+        (
+            readUniformState("bodyState", mesh_)
+        );
+        E0_ = readUniformEntry<scalar>(*state, "initialEnergy");
+        Wext_ = readUniformEntry<scalar>(*state, "externalWork");
+        Dplastic_ = readUniformEntry<scalar>(*state, "plasticDissipation");
         nEnergyLimited_ =
-            state->getOrDefault<label>("energyLimitedStages", 0);
-        minEnergyTheta_ = state->getOrDefault<scalar>("minEnergyBlending", 1);
+            readUniformEntry<label>(*state, "energyLimitedStages");
+        minEnergyTheta_ =
+            readUniformEntry<scalar>(*state, "minEnergyBlending");
     }
     else
     {
         E0_ = kineticEnergy() + strainEnergy();
+        if (!std::isfinite(E0_) || E0_ > maxInputMagnitude)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Body " << name_ << ": the initial energy " << E0_
+                << " is not representable (initialVelocity "
+                << initialVelocity_ << ", density " << material_->rho()
+                << "): check the units of the inputs"
+                << exit(FatalIOError);
+        }
     }
 }
 
@@ -256,7 +312,11 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     nEnergyLimited_(0),
     minEnergyTheta_(1),
     bcs_(),
-    bodyForce_(dict_.getOrDefault<vector>("bodyForce", Zero)),
+    bodyForce_(getFiniteOrDefault<vector>(dict_, "bodyForce", Zero)),
+    initialVelocity_
+    (
+        getFiniteOrDefault<vector>(dict_, "initialVelocity", Zero)
+    ),
     Wext_(0),
     Wext0_(0),
     E0_(0),
@@ -264,12 +324,14 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     dDplastic_(),
     power_(0),
     invalidPoint_(Zero),
-    invalidValue_(0)
+    invalidValue_(0),
+    invalidQuantity_()
 {
     // The dual mesh holds all the solver needs: free OpenFOAM's
     // demand-driven geometry and addressing (rebuilt on demand if needed)
     mesh_.clearGeom();
     mesh_.clearAddressing();
+    checkDecomposition();
 
     readScheme();
     material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
@@ -277,7 +339,6 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     setConstraints();
     setPlaneStrainPairs();
     readState();
-    material_->readState(mesh_);
     if (material_->plastic())
     {
         dDplastic_.setSize(mesh_.nPoints());
@@ -317,7 +378,15 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
         }
     }
 
-    updateConstitutive();
+    if (!updateConstitutive())
+    {
+        FatalErrorInFunction
+            << "Body " << name_ << ": the "
+            << (timeDirectory::isRestart(runTime_) ? "restart" : "initial")
+            << " state at t = " << runTime_.timeName() << " is invalid: "
+            << invalidQuantity_ << " = " << invalidValue_
+            << " at the point at " << invalidPoint_ << exit(FatalError);
+    }
     readBookkeeping();
 }
 
@@ -395,14 +464,37 @@ bool Foam::solidBody::updateConstitutive()
     // (pow of a negative J or det F); the time loop reports it
     const List<scalar>& J = Jc();
     const List<tensor>& H = Hc();
+    // (With floating-point traps off, an overflow shows here as a
+    // non-finite J, det F or momentum: the run stops with where and when)
     label bad = -1;
+    label kind = 0;
     forAll(J, i)
     {
         const scalar detF = (H[i] && F_[i])/3.0;
-        if (!(J[i] > 0) || !(detF > 0))
+        const scalar lm2 = magSqr(lm_[i]);
+        if
+        (
+            !(J[i] > 0) || !(detF > 0)
+         || !std::isfinite(J[i]) || !std::isfinite(detF)
+         || !std::isfinite(lm2)
+        )
         {
             bad = i;
-            invalidValue_ = (J[i] > 0) ? detF : J[i];
+            if (!(J[i] > 0) || !std::isfinite(J[i]))
+            {
+                kind = 0;
+                invalidValue_ = J[i];
+            }
+            else if (!(detF > 0) || !std::isfinite(detF))
+            {
+                kind = 1;
+                invalidValue_ = detF;
+            }
+            else
+            {
+                kind = 2;
+                invalidValue_ = invRho*std::sqrt(lm2);
+            }
             break;
         }
     }
@@ -422,8 +514,16 @@ bool Foam::solidBody::updateConstitutive()
         invalidPoint_ = mesh_.points()[bad];
         value = invalidValue_;
     }
+    else
+    {
+        kind = 0;
+    }
     reduce(invalidPoint_, sumOp<vector>());
     invalidValue_ = returnReduce(value, sumOp<scalar>());
+    // (kind: 0 J, 1 det F, 2 momentum; J is det F without the J law)
+    const label k = returnReduce(kind, sumOp<label>());
+    invalidQuantity_ =
+        (k == 2) ? "|v|" : (k == 1 || !JLaw_) ? "det F" : "J";
     return false;
 }
 

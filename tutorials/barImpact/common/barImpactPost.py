@@ -1,10 +1,14 @@
 #!/usr/bin/env python3
 """Post-processing of a bar-impact tutorial (run in the case directory).
 
-Reads the case (materials, initial velocity, gap, Hugoniot slope) from its
-dictionaries, the probe and energy histories from postProcessing/, the wall
-time and interpenetration from log.solidVertexMBFoam, and the exact solution
-from applications/utilities/barImpactExact.  Writes
+Reads the case from its dictionaries and meshes (materials, both initial
+velocities, bar lengths and gap, Hugoniot slope), the probe and energy
+histories from postProcessing/, the run figures from the newest complete
+time directory (uniform/runStatistics, contactState), and the exact solution
+from applications/utilities/barImpactExact (applied in the frame of Bar Two,
+so Bar Two may move too).  A case outside what the exact solution covers
+(bars not along x or not approaching, probes not at the contact faces, a
+material other than linearElastic) is refused with a message.  Writes
   results/history.csv   t,vx1,sxx1,ux1,vx2,sxx2,ux2 (the points initially at
                         the centres of the contact faces)
   results/history.png   computed against exact histories
@@ -24,7 +28,14 @@ import numpy as np
 project = os.environ['SVMB_PROJECT']
 sys.path.insert(0, os.path.join(project, 'applications', 'utilities',
                                 'barImpactExact'))
+sys.path.insert(0, os.path.join(project, 'etc'))
 import barImpactExact  # noqa: E402
+import svmbPost  # noqa: E402
+
+
+def refuse(message):
+    svmbPost.fail('barImpactPost', message + ' (this case is outside what '
+                  'the exact bar-impact solution evaluates)')
 
 
 def entry(path, key, default=None):
@@ -39,6 +50,9 @@ def entry(path, key, default=None):
 
 def material(region):
     path = 'constant/%s/solidProperties' % region
+    kind = entry(path, 'material/type')
+    if kind != 'linearElastic':
+        refuse('%s is %s, not linearElastic' % (region, kind))
     rho = float(entry(path, 'material/rho'))
     E = entry(path, 'material/E', 'none')
     if E != 'none':
@@ -50,20 +64,53 @@ def material(region):
         kappa = float(entry(path, 'material/kappa'))
         mu = float(entry(path, 'material/mu'))
         M = kappa + 4.0 * mu / 3.0
-    v = entry(path, 'initialVelocity', '(0 0 0)')
-    return M, rho, float(v.strip('()').split()[0])
+    v = [float(c) for c in entry(path, 'initialVelocity', '(0 0 0)')
+         .strip('()').split()]
+    if abs(v[1]) + abs(v[2]) > 1e-12 * max(abs(v[0]), 1e-300):
+        refuse('%s moves across the bar (initialVelocity %s)' % (region, v))
+    return M, rho, v[0]
+
+
+def extent(region):
+    """Bar extent along x and its cross-section size, from the mesh."""
+    X = svmbPost.read_points('constant/%s/polyMesh/points' % region)
+    lo, hi = X.min(axis=0), X.max(axis=0)
+    if max(hi[1] - lo[1], hi[2] - lo[2]) > hi[0] - lo[0]:
+        refuse('%s is not a bar along x (extent %s)' % (region, hi - lo))
+    return lo[0], hi[0]
+
+
+def probe_x(region):
+    loc = entry('constant/%s/solidProperties' % region, 'probes/locations',
+                '()')
+    xs = re.findall(r'[-+0-9.eE]+', loc)
+    if not xs:
+        refuse('%s has no probe' % region)
+    return float(xs[0])
 
 
 def main():
-    M1, rho1, v0 = material('barOne')
-    M2, rho2, _ = material('barTwo')
+    M1, rho1, v1 = material('barOne')
+    M2, rho2, v2 = material('barTwo')
+    # The exact solution has Bar Two at rest: evaluate it in Bar Two's
+    # frame with v0 = v1 - v2, then add v2 back (Galilean invariance)
+    v0 = v1 - v2
+    if not v0 > 0:
+        refuse('the bars do not approach (Bar One at %g, Bar Two at %g)'
+               % (v1, v2))
+    a1, b1 = extent('barOne')
+    a2, b2 = extent('barTwo')
+    if not a2 >= b1:
+        refuse('Bar Two does not lie after Bar One along x')
+    L1, L2, gap = b1 - a1, b2 - a2, a2 - b1
+    tol = 1e-6 * max(L1, L2)
+    if abs(probe_x('barOne') - b1) > tol or abs(probe_x('barTwo') - a2) > tol:
+        refuse('the first probe of each bar must be at its contact face '
+               '(x = %g and %g)' % (b1, a2))
     s = float(entry('constant/contactProperties', 'contacts/barContact/s', '0')
               if entry('constant/contactProperties',
                        'contacts/barContact/riemannSolver',
                        'acoustic') == 'hugoniot' else 0.0)
-    # gap: from the probe location of Bar Two (initially at 10 + gap)
-    loc = entry('constant/barTwo/solidProperties', 'probes/locations')
-    gap = float(re.findall(r'[-+0-9.eE]+', loc)[0]) - 10.0
 
     p1 = np.genfromtxt('postProcessing/barOne/probes.csv', delimiter=',', names=True)
     p2 = np.genfromtxt('postProcessing/barTwo/probes.csv', delimiter=',', names=True)
@@ -78,13 +125,15 @@ def main():
 
     vC, sC = barImpactExact.contact_plateau(M1, M2, rho1, rho2, v0, s)
     tEnd = float(t[-1])
-    summary = {'v0': v0, 'gap': gap, 'hugoniotS': s,
-               'exactContactVelocity': vC, 'exactContactStress': sC}
+    vC += v2
+    summary = {'v0': v0, 'vBarTwo': v2, 'lengths': [L1, L2], 'gap': gap,
+               'hugoniotS': s, 'exactContactVelocity': vC,
+               'exactContactStress': sC}
 
     # contact window from the computed histories: start when Bar Two's face
     # moves (half the contact velocity), end when Bar One's face stress is
     # back to zero (5 % of the contact stress)
-    moving = np.where(np.abs(p2['vx0']) > 0.5 * abs(vC))[0]
+    moving = np.where(np.abs(p2['vx0'] - v2) > 0.5 * abs(vC - v2))[0]
     tContact = float(t[moving[0]]) if len(moving) else None
     summary['contactStart'] = tContact
     summary['contactStartExact'] = gap / v0
@@ -105,7 +154,12 @@ def main():
     exact = None
     if s == 0:
         exact, dt, _ = barImpactExact.linear_history(
-            M1, M2, rho1, rho2, v0, gap, tEnd)
+            M1, M2, rho1, rho2, v0, gap, tEnd, L1=L1, L2=L2)
+        # back from Bar Two's frame: velocities + v2, displacements + v2 t
+        exact[:, 1] += v2
+        exact[:, 4] += v2
+        exact[:, 3] += v2 * exact[:, 0]
+        exact[:, 6] += v2 * exact[:, 0]
         ex = {k: np.interp(t, exact[:, 0], exact[:, i])
               for i, k in enumerate(['t', 'vx1', 'sxx1', 'ux1', 'vx2', 'sxx2', 'ux2'])}
         L1 = {
@@ -128,13 +182,10 @@ def main():
     summary['momentumFinal'] = float(e1['px'][-1] + e2['px'][-1])
     summary['momentumError'] = float(abs(summary['momentumFinal'] - summary['momentumInitial'])
                                      / abs(summary['momentumInitial']))
-    log = open('log.solidVertexMBFoam').read()
-    m = re.search(r'largest interpenetration (\S+)', log)
-    summary['maxInterpenetration'] = float(m.group(1)) if m else None
-    m = re.search(r'^Finished (\d+) steps in (\S+) s wall', log, re.M)
-    summary['steps'], summary['wallTime'] = int(m.group(1)), float(m.group(2))
-    m = re.search(r'\((\d+) points, (\d+) cores\)', log)
-    summary['points'] = int(m.group(1))
+    stats = svmbPost.run_statistics()
+    summary['maxInterpenetration'] = stats.get('maxInterpenetration')
+    for k in ('steps', 'wallTime', 'points', 'throughput'):
+        summary[k] = stats[k]
 
     json.dump(summary, open('results/summary.json', 'w'), indent=2)
 

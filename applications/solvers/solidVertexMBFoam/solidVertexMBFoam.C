@@ -93,16 +93,15 @@ int main(int argc, char *argv[])
 
     Info<< "Starting time loop" << nl << endl;
 
-    while (runTime.run())
+    // The run ends exactly at endTime (the last step is shortened to land
+    // there); Time::run() would stop up to half a step before it
+    const scalar endTolerance = 1e-6*firstDeltaT;
+    while (endTime - runTime.value() > endTolerance)
     {
         const scalar t0 = runTime.value();
-        const scalar dt = runTime.limitToWriteTime
+        const scalar dt = runTime.stepToTargets
         (
-            min
-            (
-                tvdRungeKutta2::stableDeltaT(bodies, contacts, cfl),
-                endTime - t0
-            )
+            tvdRungeKutta2::stableDeltaT(bodies, contacts, cfl)
         );
         #include "checkDeltaT.H"
         runTime.setDeltaT(dt, false);
@@ -127,8 +126,7 @@ int main(int argc, char *argv[])
         }
 
         // The end time is always written, whatever the write interval
-        const bool last =
-            !(runTime.value() < endTime - 0.5*runTime.deltaTValue());
+        const bool last = !(endTime - runTime.value() > endTolerance);
         if (runTime.writeTime() || last)
         {
             writeState();

@@ -37,15 +37,7 @@ Foam::solidBoundaryConditions::traction::traction
         )
     )
 {
-    // A value that overflows the fluxes would stop the run much later
-    if (!finiteInput(traction_->value(0)))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'traction' of patch '" << patchName() << "' is "
-            << traction_->value(0) << " at t = 0: not a finite vector of"
-            << " magnitude at most " << maxInputMagnitude
-            << exit(FatalIOError);
-    }
+    checkFiniteAtStart(dict, "traction", patchName(), traction_->value(0));
 }
 
 

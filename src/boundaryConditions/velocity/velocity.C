@@ -29,15 +29,7 @@ Foam::solidBoundaryConditions::velocity::velocity
 ,
     velocity_(Function1<vector>::New("velocity", dict))
 {
-    // A value that overflows the fluxes would stop the run much later
-    if (!finiteInput(velocity_->value(0)))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'velocity' of patch '" << patchName() << "' is "
-            << velocity_->value(0) << " at t = 0: not a finite vector of"
-            << " magnitude at most " << maxInputMagnitude
-            << exit(FatalIOError);
-    }
+    checkFiniteAtStart(dict, "velocity", patchName(), velocity_->value(0));
 }
 
 

@@ -166,9 +166,7 @@ void Foam::contactPair::checkOverlap() const
     {
         const pointData& da = a[offsetA + i];
         const pointData& db = b[A_.partner[i]];
-        const scalar gap =
-            (dataVec(db, 0) - dataVec(da, 0))
-          & gapDirection(pairNormal(da, db));
+        const scalar gap = pairGap(da, db);
         if (gap/da[13] < worst)
         {
             worst = gap/da[13];
@@ -191,6 +189,16 @@ void Foam::contactPair::checkOverlap() const
             << " bodies apart (a gap of 0 or more) and mesh again."
             << exit(FatalIOError);
     }
+}
+
+
+Foam::scalar Foam::contactPair::pairGap
+(
+    const pointData& a,
+    const pointData& b
+) const
+{
+    return (dataVec(b, 0) - dataVec(a, 0)) & gapDirection(pairNormal(a, b));
 }
 
 
@@ -643,11 +651,7 @@ void Foam::contactPair::addFluxes()
         if (A_.closed[i])
         {
             A_.body->setSurfaceVelocity(A_.points[i], A_.vC[i]);
-            const scalar pen =
-                -(
-                    (dataVec(b, 0) - dataVec(a, 0))
-                  & gapDirection(pairNormal(a, b))
-                );
+            const scalar pen = -pairGap(a, b);
             maxPenetration_ = max(maxPenetration_, pen/a[13]);
         }
     }
@@ -698,9 +702,7 @@ void Foam::contactPair::startStep()
     {
         const pointData& da = a[offsetA + i];
         const pointData& db = b[A_.partner[i]];
-        const scalar gap =
-            (dataVec(db, 0) - dataVec(da, 0))
-          & gapDirection(pairNormal(da, db));
+        const scalar gap = pairGap(da, db);
         A_.closed[i] = (gap <= gapTolerance*da[13]);
         closedA[i] = A_.closed[i];
     }

@@ -201,21 +201,25 @@ void Foam::solverTime::selectStartTime()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-Foam::scalar Foam::solverTime::limitToWriteTime(const scalar dt) const
+Foam::scalar Foam::solverTime::stepToTargets(const scalar dt) const
 {
-    if (writeControl_ != wcAdjustableRunTime)
+    // The next target: endTime, or the next write time if earlier
+    scalar toTarget = endTime_ - value();
+    if (writeControl_ == wcAdjustableRunTime)
+    {
+        toTarget = min
+        (
+            toTarget,
+            (writeTimeIndex_ + 1)*writeInterval_ - (value() - startTime_)
+        );
+    }
+    if (!(toTarget > 0) || !(dt > 0))
     {
         return dt;
     }
-    const scalar toWrite =
-        (writeTimeIndex_ + 1)*writeInterval_ - (value() - startTime_);
-    if (!(toWrite > 0) || dt <= 0)
-    {
-        return dt;
-    }
-    // Equal steps up to the write time, none longer than dt
-    const scalar nSteps = std::ceil(toWrite/dt*(1 - 1e-12));
-    return (nSteps <= 1) ? min(dt, toWrite) : min(dt, toWrite/nSteps);
+    // Equal steps up to the target, none longer than dt
+    const scalar nSteps = std::ceil(toTarget/dt*(1 - 1e-12));
+    return (nSteps <= 1) ? min(dt, toTarget) : min(dt, toTarget/nSteps);
 }
 
 

@@ -8,7 +8,9 @@ time directory (uniform/runStatistics, contactState), and the exact solution
 from applications/utilities/barImpactExact (applied in the frame of Bar Two,
 so Bar Two may move too).  A case outside what the exact solution covers
 (bars not along x or not approaching, probes not at the contact faces, a
-material other than linearElastic) is refused with a message.  Writes
+plastic material) is refused with a message.  Elastic materials are
+evaluated by their acoustic impedance (lambda + 2 mu) and, with a Hugoniot
+pressure, by the Hugoniot plateau.  Writes
   results/history.csv   t,vx1,sxx1,ux1,vx2,sxx2,ux2 (the points initially at
                         the centres of the contact faces)
   results/history.png   computed against exact histories
@@ -51,8 +53,8 @@ def entry(path, key, default=None):
 def material(region):
     path = 'constant/%s/solidProperties' % region
     kind = entry(path, 'material/type')
-    if kind != 'linearElastic':
-        refuse('%s is %s, not linearElastic' % (region, kind))
+    if kind not in ('linearElastic', 'neoHookean', 'mooneyRivlin'):
+        refuse('%s is %s, not an elastic material' % (region, kind))
     rho = float(entry(path, 'material/rho'))
     E = entry(path, 'material/E', 'none')
     if E != 'none':

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Post-processing shared by the multi-dimensional tutorials (benchmarks.md,
+"""Post-processing shared by the multi-dimensional tutorials (doc/benchmarks.md,
 parts B and C).  Run in a case directory after solidVertexMBFoam:
 
     svmbCasePost.py [--plane x|y|z] [--taylor-bar] [--contact-times]
@@ -30,7 +30,7 @@ Pressure smoothness at each written time and body:
 Numerical dissipation D = E0 + W_ext - (K + U + D_plastic): its smallest
 value and its largest decrease, both relative to the initial energy.
 --taylor-bar: final radius and length of the bar (probe 0 at the edge of
-the impact face, probe 2 at the top centre) against benchmarks.md, and the
+the impact face, probe 2 at the top centre) against doc/benchmarks.md, and the
 range of the final radii of all points on the edge of the impact face
 (roundness of the foot).
 --plane-strain: planeStrainMismatch, the largest velocity difference
@@ -364,7 +364,7 @@ def main():
 
     if args.taylor_bar:
         pr = svmbPost.read_csv('postProcessing/region0/probes.csv')
-        R = 3.2e-3  # bar radius (benchmarks.md)
+        R = 3.2e-3  # bar radius (doc/benchmarks.md)
         r = np.hypot(R + pr['ux0'][-1], pr['uz0'][-1])  # probe 0 at (R 0 0)
         summary['finalRadius_mm'] = float(1e3*r)
         summary['finalLength_mm'] = float(1e3*(32.4e-3 + pr['uy2'][-1]))

@@ -1,4 +1,4 @@
-// One bar of benchmark B2 (benchmarks.md): the rectangle [x0, x0+L] x
+// One bar of benchmark B2 (doc/benchmarks.md): the rectangle [x0, x0+L] x
 // [-W/2, W/2] of structured right-angled triangles (nx by ny squares, each
 // cut in two), extruded one layer of thickness t along z (prisms) for
 // plane strain.  Bar Two (contactEnd = 0) is meshed as the mirror image

@@ -1,4 +1,4 @@
-// One ring of benchmark B1 (benchmarks.md): annulus of outer radius Ro and
+// One ring of benchmark B1 (doc/benchmarks.md): annulus of outer radius Ro and
 // inner radius Ri centred at (cx, 0), four structured blocks (the quarter
 // arcs between -45, 45, 135 and 225 degrees), nr cells across and nq along
 // each quarter, triangles extruded one layer of thickness t along z for

@@ -1,4 +1,4 @@
-// Taylor bar (benchmarks.md, C1): quarter of a cylinder of radius R and
+// Taylor bar (doc/benchmarks.md, C1): quarter of a cylinder of radius R and
 // length L along y, impact face at y = 0, in x >= 0, z >= 0.  Unstructured
 // tetrahedra of size h = R/(2 N) (hex = 1: an O-grid of hexahedra, N cells
 // along each edge of the quarter section, 25 (N - 1) layers; hex = 2: the

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Exact solution of two bars hitting each other (benchmarks.md, part A).
+"""Exact solution of two bars hitting each other (doc/benchmarks.md, part A).
 
 Bar One [0, L1] moves at +v0 towards Bar Two [L1 + gap, L1 + gap + L2] at
 rest; unilateral contact (the bars touch, push, and separate when the
@@ -14,7 +14,7 @@ the events (and, when L2/c2 is not a multiple of dt, a length rounding of
 at most half a lattice cell of Bar Two, reported).
 
 Hugoniot bars (shock speed U = c + s v_p, s > 0): the in-contact plateau
-from the non-linear Riemann solver (method.md, section 3).
+from the non-linear Riemann solver (doc/method.md, section 3).
 
     barImpactExact.py --E1 100 --E2 100 --rho1 0.01 --rho2 0.01 --v0 0.1 \
         --gap 0.01 --tEnd 0.4 [--s 1] [--out exact.csv]
@@ -33,7 +33,7 @@ def contact_plateau(E1, E2, rho1, rho2, v0, s=0.0):
     if s == 0:
         v = Z1 * v0 / (Z1 + Z2)
         return v, -Z1 * Z2 * v0 / (Z1 + Z2)
-    # method.md: L = Bar One (vL = v0), R = Bar Two (vR = 0), t = 0, Lambda = 1
+    # doc/method.md: L = Bar One (vL = v0), R = Bar Two (vR = 0), t = 0, Lambda = 1
     a = s * (rho2 - rho1)
     b = Z1 + Z2 + 2 * s * rho1 * v0
     c0 = -(Z1 * v0 + s * rho1 * v0 ** 2)

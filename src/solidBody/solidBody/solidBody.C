@@ -578,7 +578,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     const scalar Sfactor = 0.5/Zp;
 
     // Hugoniot materials: compressive jumps travel at the shock speed
-    // c + s Lambda [[v_n]] (method.md, homogeneous Hugoniot solver): the
+    // c + s Lambda [[v_n]] (doc/method.md, homogeneous Hugoniot solver): the
     // upwind impedance grows with the jump
     const bool shock = material_->hugoniot();
     const scalar rhoS = material_->rho()*material_->hugoniotS();

@@ -11,7 +11,7 @@ Description
         the chain with H and J) for random deformations;
       - objectivity: P(Q F) = Q P(F) for a rotation Q;
       - small strain: P(I + eps G) / eps -> the linear elastic stress;
-      - wave speeds from (E, nu) as in method.md;
+      - wave speeds from (E, nu) as in doc/method.md;
       - Hugoniot pressure p_H(J) = rho c^2 (J-1)/[1 - s(1-J)]^2 in compression.
     The tensor cross product is checked against H = cof F, J = H:F/3.
     Exits non-zero if a check fails.
@@ -173,7 +173,7 @@ int main(int argc, char *argv[])
         // Independent J (J law): P = dW/dF|J + Sigma_J cof F with Sigma_J
         // = dW/dJ, the J-conjugate stress the J stabilisation uses.  With
         // both, the semi-discrete energy balance is exact and the scheme
-        // only dissipates (method.md, section 7; the tie energy in
+        // only dissipates (doc/method.md, section 7; the tie energy in
         // materialModel.H is built for this)
         if (finiteStrain && !m.hugoniot())
         {

@@ -7,7 +7,7 @@ Application
 
 Description
     Riemann and boundary formulas against hand-computed cases
-    (method.md, section 3):
+    (doc/method.md, section 3):
       - acoustic contact stick between different impedances (normal and
         tangential), its symmetric (homogeneous) limit;
       - the Hugoniot check: two identical bars, c = 100, rho0 = 0.01,

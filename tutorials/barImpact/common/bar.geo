@@ -1,4 +1,4 @@
-// One bar of the bar-impact benchmarks (benchmarks.md, part A): a box
+// One bar of the bar-impact benchmarks (doc/benchmarks.md, part A): a box
 // [x0, x0+L] x [-W/2, W/2]^2 of structured tetrahedra (each hex cell split in
 // six; hex = 1: hexahedra), nx cells along the bar and ny across.  Patches:
 //   contact  the end facing the other bar (contactEnd = 1: at x0+L, else x0)

@@ -1,4 +1,4 @@
-// Car body of benchmark C4 (benchmarks.md): a solid, car-like profile in
+// Car body of benchmark C4 (doc/benchmarks.md): a solid, car-like profile in
 // the x-y plane extruded 1 m along z; length 2.6 m (front at x = 0, facing
 // -x), height 1 m; bonnet and boot at 0.6 m, cabin roof at 1 m, front
 // bottom rounded with R1 = 0.2 m, rear top with R2 = 0.3 m.

@@ -44,7 +44,7 @@ void Foam::solidBody::readScheme()
     secondOrder_ = scheme.getOrDefault<Switch>("secondOrder", true);
     // Off by default: its one blending factor per body lowers the order of
     // the whole body where one place produces energy, which costs the 1D
-    // wall reflection 0.9 % of its plateau accuracy (README, Known issues)
+    // wall reflection 0.9 % of its plateau accuracy (doc/design.md)
     energyStable_ =
         secondOrder_ && scheme.getOrDefault<Switch>("energyStable", false);
 

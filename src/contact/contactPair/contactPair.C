@@ -17,13 +17,6 @@ namespace
 
 using namespace Foam;
 
-// Point data layout: x(0-2) v(3-5) t = P N (6-8) n spatial normal (9-11)
-// Lambda = |H N| (12) edge length (13)
-inline vector dataVec(const contactPair::pointData& d, const label o)
-{
-    return vector(d[o], d[o + 1], d[o + 2]);
-}
-
 // Normal of a point pair, from A to B: the bisector of A's normal and minus
 // B's.  Either normal alone makes the pair's Riemann problem lopsided where
 // the surfaces curve (edges and corners of a contact area), and mirrored
@@ -34,9 +27,9 @@ inline vector pairNormal
     const contactPair::pointData& b
 )
 {
-    const vector n(dataVec(a, 9) - dataVec(b, 9));
+    const vector n(a.n - b.n);
     const scalar magN = mag(n);
-    return magN > SMALL ? n/magN : dataVec(a, 9);
+    return magN > SMALL ? n/magN : a.n;
 }
 
 template<class T>
@@ -167,10 +160,10 @@ void Foam::contactPair::checkOverlap() const
         const pointData& da = a[offsetA + i];
         const pointData& db = b[A_.partner[i]];
         const scalar gap = pairGap(da, db);
-        if (gap/da[13] < worst)
+        if (gap/da.length < worst)
         {
-            worst = gap/da[13];
-            where = dataVec(da, 0);
+            worst = gap/da.length;
+            where = da.x;
         }
     }
     const scalar globalWorst = returnReduce(worst, minOp<scalar>());
@@ -198,7 +191,7 @@ Foam::scalar Foam::contactPair::pairGap
     const pointData& b
 ) const
 {
-    return (dataVec(b, 0) - dataVec(a, 0)) & gapDirection(pairNormal(a, b));
+    return (b.x - a.x) & gapDirection(pairNormal(a, b));
 }
 
 
@@ -373,16 +366,7 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::gatherData
         {
             n = normalised(Pr & N);
         }
-        pointData& d = local[i];
-        for (direction c = 0; c < 3; ++c)
-        {
-            d[c] = x[p][c];
-            d[3 + c] = v[p][c];
-            d[6 + c] = t[c];
-            d[9 + c] = n[c];
-        }
-        d[12] = Lambda;
-        d[13] = side.length[i];
+        local[i] = pointData{x[p], v[p], t, n, Lambda, side.length[i]};
     }
     return allGather(local);
 }
@@ -401,9 +385,9 @@ void Foam::contactPair::pairState
     const materialModel& mA = A_.body->material();
     const materialModel& mB = B_.body->material();
 
-    const vector vA(dataVec(a, 3)), vB(dataVec(b, 3));
-    const vector tA(dataVec(a, 6)), tBown(dataVec(b, 6));
-    const vector n(pairNormal(a, b)), nBown(dataVec(b, 9));
+    const vector vA(a.v), vB(b.v);
+    const vector tA(a.t), tBown(b.t);
+    const vector n(pairNormal(a, b)), nBown(b.n);
 
     // Open gap or (below) tension: both sides traction-free
     auto separate = [&]()
@@ -425,8 +409,8 @@ void Foam::contactPair::pairState
     // Traction of B measured with A's normal: t^R = -P^B N^B
     const vector tB(-tBown);
 
-    contactRiemannSolver::side L{tA & n, vA & n, mA.rho(), mA.cp(), a[12]};
-    contactRiemannSolver::side R{tB & n, vB & n, mB.rho(), mB.cp(), b[12]};
+    contactRiemannSolver::side L{tA & n, vA & n, mA.rho(), mA.cp(), a.Lambda};
+    contactRiemannSolver::side R{tB & n, vB & n, mB.rho(), mB.cp(), b.Lambda};
     scalar vnC, tnC;
     riemann_->normalState(L, R, vnC, tnC);
 
@@ -652,7 +636,7 @@ void Foam::contactPair::addFluxes()
         {
             A_.body->setSurfaceVelocity(A_.points[i], A_.vC[i]);
             const scalar pen = -pairGap(a, b);
-            maxPenetration_ = max(maxPenetration_, pen/a[13]);
+            maxPenetration_ = max(maxPenetration_, pen/a.length);
         }
     }
     forAll(B_.points, i)
@@ -703,7 +687,7 @@ void Foam::contactPair::startStep()
         const pointData& da = a[offsetA + i];
         const pointData& db = b[A_.partner[i]];
         const scalar gap = pairGap(da, db);
-        A_.closed[i] = (gap <= gapTolerance*da[13]);
+        A_.closed[i] = (gap <= gapTolerance*da.length);
         closedA[i] = A_.closed[i];
     }
     const scalarField globalClosedA(allGather(closedA));
@@ -741,11 +725,11 @@ Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
         const pointData& da = a[offsetA + i];
         const pointData& db = b[A_.partner[i]];
         const vector n(gapDirection(pairNormal(da, db)));
-        const scalar gap = (dataVec(db, 0) - dataVec(da, 0)) & n;
-        const scalar closing = (dataVec(da, 3) - dataVec(db, 3)) & n;
+        const scalar gap = (db.x - da.x) & n;
+        const scalar closing = (da.v - db.v) & n;
         if
         (
-            gap > gapTolerance*da[13] && closing > 0
+            gap > gapTolerance*da.length && closing > 0
          && gap > closing*dtFloor
         )
         {

@@ -67,7 +67,7 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
     {
         // Open gap or tension: traction-free
         tC = Zero;
-        vC = acoustic::tractionVelocity(tL, v, tC, n, Zp, Zs);
+        vC = acousticFormulas::tractionVelocity(tL, v, tC, n, Zp, Zs);
         return;
     }
 
@@ -75,20 +75,20 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
     {
         case frictionLaw::model::frictionless:
         {
-            acoustic::mixedState(tL, v, vWallN, Zero, nc, Zp, Zs, tC, vC);
+            acousticFormulas::mixedState(tL, v, vWallN, Zero, nc, Zp, Zs, tC, vC);
             break;
         }
         case frictionLaw::model::stick:
         {
             vC = velocity_;
-            tC = acoustic::velocityTraction(tL, v, vC, nc, Zp, Zs);
+            tC = acousticFormulas::velocityTraction(tL, v, vC, nc, Zp, Zs);
             break;
         }
         case frictionLaw::model::coulomb:
         {
             // Trial stick; slip when the tangential traction exceeds k |t_n|
-            tC = acoustic::velocityTraction(tL, v, velocity_, nc, Zp, Zs);
-            const vector tt(acoustic::tangential(tC, nc));
+            tC = acousticFormulas::velocityTraction(tL, v, velocity_, nc, Zp, Zs);
+            const vector tt(acousticFormulas::tangential(tC, nc));
             const scalar limit = -friction_.coefficient()*tnTrial;
             if (mag(tt) <= limit)
             {
@@ -96,7 +96,7 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
             }
             else
             {
-                acoustic::mixedState
+                acousticFormulas::mixedState
                 (
                     tL, v, vWallN, (limit/mag(tt))*tt, nc, Zp, Zs, tC, vC
                 );

@@ -98,7 +98,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     const scalar Zs,
     const scalar t,
     UList<vector>& Rp,
-    UList<tensor>& D
+    UList<tensor>& RF
 ) const
 {
     const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
@@ -139,7 +139,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         }
 
         Rp[i] += magA*tC;
-        D[i] += vC*sf.area[s];
+        RF[i] += vC*sf.area[s];
         power += magA*pC;
     }
 

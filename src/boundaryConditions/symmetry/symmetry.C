@@ -44,7 +44,7 @@ void Foam::solidBoundaryConditions::symmetry::contactState
 {
     // The plane's own normal (the reference one): the deformed normal may
     // tilt, and its normal reaction would then push along the plane
-    acoustic::mixedState(tL, v, 0, Zero, N, Zp, Zs, tC, vC);
+    acousticFormulas::mixedState(tL, v, 0, Zero, N, Zp, Zs, tC, vC);
 }
 
 

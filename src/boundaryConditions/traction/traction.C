@@ -56,7 +56,7 @@ void Foam::solidBoundaryConditions::traction::contactState
 ) const
 {
     tC = traction_->value(t);
-    vC = acoustic::tractionVelocity(tL, v, tC, n, Zp, Zs);
+    vC = acousticFormulas::tractionVelocity(tL, v, tC, n, Zp, Zs);
 }
 
 

@@ -48,7 +48,7 @@ void Foam::solidBoundaryConditions::velocity::contactState
 ) const
 {
     vC = velocity_->value(t);
-    tC = acoustic::velocityTraction(tL, v, vC, n, Zp, Zs);
+    tC = acousticFormulas::velocityTraction(tL, v, vC, n, Zp, Zs);
 }
 
 

@@ -393,8 +393,8 @@ void Foam::contactPair::pairState
     auto separate = [&]()
     {
         tC = Zero;
-        vCA = acoustic::tractionVelocity(tA, vA, Zero, n, mA.Zp(), mA.Zs());
-        vCB = acoustic::tractionVelocity
+        vCA = acousticFormulas::tractionVelocity(tA, vA, Zero, n, mA.Zp(), mA.Zs());
+        vCB = acousticFormulas::tractionVelocity
         (
             tBown, vB, Zero, nBown, mB.Zp(), mB.Zs()
         );
@@ -479,7 +479,7 @@ Foam::scalar Foam::contactPair::addSideFluxes
     solidBody& body = *side.body;
     const dualMesh::patchSubFaces& sf = body.dual().subFaces(side.patchi);
     List<vector>& Rp = body.momentumResidual();
-    List<tensor>& D = body.deformationResidual();
+    List<tensor>& RF = body.deformationResidual();
 
     side.force = Zero;
     scalar power = 0;
@@ -501,7 +501,7 @@ Foam::scalar Foam::contactPair::addSideFluxes
           + w*((side.tC[ip] & side.vC[ip]) + (side.tC[in] & side.vC[in]));
 
         side.force[i] += magA*tC;
-        D[sf.point[s]] += vC*sf.area[s];
+        RF[sf.point[s]] += vC*sf.area[s];
         power += magA*pC;
     }
     if (tractions)

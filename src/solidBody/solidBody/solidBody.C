@@ -350,7 +350,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     P_.setSize(nPts);
     SigmaJ_.setSize(nPts);
     Rp_.setSize(nPts);
-    D_.setSize(nPts);
+    RF_.setSize(nPts);
     if (JLaw_)
     {
         RJ_.setSize(nPts);
@@ -531,7 +531,7 @@ bool Foam::solidBody::updateConstitutive()
 Foam::vector2D Foam::solidBody::interiorProduction
 (
     const List<vector>& Rp,
-    const List<tensor>& D,
+    const List<tensor>& RF,
     const List<scalar>& RJ
 ) const
 {
@@ -550,7 +550,7 @@ Foam::vector2D Foam::solidBody::interiorProduction
         const vector& v = v_[i];
         const tensor& P = P_[i];
         prod.x() +=
-            (v & Rp[i]) + (P && D[i]) - (v & (P & edgeAreaSum_[i]));
+            (v & Rp[i]) + (P && RF[i]) - (v & (P & edgeAreaSum_[i]));
         prod.y() += mag(v)*mag(P)*edgeAreaMag_[i];
     }
     if (JLaw_)
@@ -584,7 +584,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     const scalar rhoS = material_->rho()*material_->hugoniotS();
 
     Rp_ = Zero;
-    D_ = Zero;
+    RF_ = Zero;
     if (JLaw_)
     {
         RJ_ = 0;
@@ -603,7 +603,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     }
 
     // One edge's upwind fluxes from its two midpoint states, added to the
-    // residual lists Rp, D, RJ
+    // residual lists Rp, RF, RJ
     auto addEdgeFlux =
     [&]
     (
@@ -611,7 +611,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         const vector& vL, const vector& vR,
         const tensor& PL, const tensor& PR,
         const scalar SJL, const scalar SJR,
-        List<vector>& Rp, List<tensor>& D, List<scalar>& RJ
+        List<vector>& Rp, List<tensor>& RF, List<scalar>& RJ
     )
     {
         const label i = es[e], j = ee[e];
@@ -633,15 +633,15 @@ void Foam::solidBody::assembleResiduals(const scalar t)
         }
         const vector tC
         (
-            A*acoustic::stickTraction(PL & N, PR & N, vL, vR, n, Zn, Zs)
+            A*acousticFormulas::stickTraction(PL & N, PR & N, vL, vR, n, Zn, Zs)
         );
         Rp[i] += tC;
         Rp[j] -= tC;
 
         // Un-stabilised average velocity: preserves the involutions
         const tensor vN((0.5*A)*(vL + vR)*N);
-        D[i] += vN;
-        D[j] -= vN;
+        RF[i] += vN;
+        RF[j] -= vN;
 
         if (JLaw_)
         {
@@ -669,7 +669,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
                 fluxVelocity(qL), fluxVelocity(qR),
                 fluxStress(qL), fluxStress(qR),
                 fluxSigmaJ(qL), fluxSigmaJ(qR),
-                Rp_, D_, RJ_
+                Rp_, RF_, RJ_
             );
         }
     }
@@ -681,13 +681,13 @@ void Foam::solidBody::assembleResiduals(const scalar t)
             addEdgeFlux
             (
                 e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
-                Rp_, D_, RJ_
+                Rp_, RF_, RJ_
             );
         }
     }
 
     // Energy stability: the residuals, and so the body's energy rate
-    // sum v.Rp + P:D + Sigma_J RJ, are linear in a blend
+    // sum v.Rp + P:RF + Sigma_J RJ, are linear in a blend
     // R = R0 + theta (R2 - R0) of the first- and second-order interior
     // residuals.  If the second-order fluxes produce energy, take the
     // theta that makes their production zero: the interior fluxes then
@@ -698,7 +698,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     {
         const vector2D S2
         (
-            returnReduce(interiorProduction(Rp_, D_, RJ_), sumOp<vector2D>())
+            returnReduce(interiorProduction(Rp_, RF_, RJ_), sumOp<vector2D>())
         );
 
         // (Productions within rounding of zero, as in uniform motion, are
@@ -709,11 +709,11 @@ void Foam::solidBody::assembleResiduals(const scalar t)
             if (Rp0_.size() != nPts)
             {
                 Rp0_.setSize(nPts);
-                D0_.setSize(nPts);
+                RF0_.setSize(nPts);
                 RJ0_.setSize(JLaw_ ? nPts : 0);
             }
             Rp0_ = Zero;
-            D0_ = Zero;
+            RF0_ = Zero;
             RJ0_ = 0;
             forAll(es, e)
             {
@@ -721,14 +721,14 @@ void Foam::solidBody::assembleResiduals(const scalar t)
                 addEdgeFlux
                 (
                     e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
-                    Rp0_, D0_, RJ0_
+                    Rp0_, RF0_, RJ0_
                 );
             }
             const scalar S0 = min
             (
                 returnReduce
                 (
-                    interiorProduction(Rp0_, D0_, RJ0_).x(),
+                    interiorProduction(Rp0_, RF0_, RJ0_).x(),
                     sumOp<scalar>()
                 ),
                 0
@@ -738,7 +738,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
             forAll(Rp_, i)
             {
                 Rp_[i] = Rp0_[i] + theta*(Rp_[i] - Rp0_[i]);
-                D_[i] = D0_[i] + theta*(D_[i] - D0_[i]);
+                RF_[i] = RF0_[i] + theta*(RF_[i] - RF0_[i]);
             }
             forAll(RJ_, i)
             {
@@ -753,7 +753,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     power_ = 0;
     for (const solidBoundaryCondition& bc : bcs_)
     {
-        power_ += bc.addFluxes(x_, v_, P_, H, Zp, Zs, t, Rp_, D_);
+        power_ += bc.addFluxes(x_, v_, P_, H, Zp, Zs, t, Rp_, RF_);
     }
 
 }
@@ -762,7 +762,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
 void Foam::solidBody::finishResiduals()
 {
     dual_.syncPointResidual(Rp_);
-    dual_.syncPointResidual(D_);
+    dual_.syncPointResidual(RF_);
     if (JLaw_)
     {
         dual_.syncPointResidual(RJ_);
@@ -944,7 +944,7 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
     forAll(lm_, i)
     {
         const scalar invV = 1.0/V[i];
-        const tensor Drate(invV*D_[i]);
+        const tensor Drate(invV*RF_[i]);
 
         // Rates of H and J use the stage's F and H (before the update)
         if (HLaw_)

@@ -62,7 +62,7 @@ int main(int argc, char *argv[])
         const vector n(1, 0, 0);
         const vector tL(-1, 0.5, 0), tR(-3, 1.5, 0);
         const vector vL(2, 1, 0), vR(0, 3, 0);
-        const vector tC(acoustic::stickTraction(tL, tR, vL, vR, n, 2, 1));
+        const vector tC(acousticFormulas::stickTraction(tL, tR, vL, vR, n, 2, 1));
         // 1/2 (tL + tR) + Zp/2 dv_n n + Zs/2 dv_t
         check("t_x", tC.x(), -2 + 1*(-2));
         check("t_y", tC.y(), 1 + 0.5*2);
@@ -108,18 +108,18 @@ int main(int argc, char *argv[])
         const vector tL(-3, 1, 0), vL(1, 2, 0);
 
         // Traction-free: v^C = v - t_n/Zp n - t_t/Zs
-        const vector vFree(acoustic::tractionVelocity(tL, vL, Zero, n, 2, 1));
+        const vector vFree(acousticFormulas::tractionVelocity(tL, vL, Zero, n, 2, 1));
         check("free surface v_x", vFree.x(), 1 + 1.5);
         check("free surface v_y", vFree.y(), 2 - 1);
 
         // Rigid (prescribed velocity zero): t^C = t + Z (0 - v)
-        const vector tRigid(acoustic::velocityTraction(tL, vL, Zero, n, 2, 1));
+        const vector tRigid(acousticFormulas::velocityTraction(tL, vL, Zero, n, 2, 1));
         check("rigid t_x", tRigid.x(), -3 - 2*1);
         check("rigid t_y", tRigid.y(), 1 - 1*2);
 
         // Symmetry / frictionless wall: v_n = 0, t_t = 0
         vector tC, vC;
-        acoustic::mixedState(tL, vL, 0, Zero, n, 2, 1, tC, vC);
+        acousticFormulas::mixedState(tL, vL, 0, Zero, n, 2, 1, tC, vC);
         check("symmetry t_n", tC.x(), -3 - 2*1);
         check("symmetry t_t", tC.y(), 0);
         check("symmetry v_n", vC.x(), 0);
@@ -128,7 +128,7 @@ int main(int argc, char *argv[])
         // Coulomb on a wall, k = 0.5: trial stick t_t = 1 - 2 = -1,
         // |t_t| = 1 <= 0.5 |t_n| = 2.5: stick
         // k = 0.1: limit 0.5 < 1: slip with t_t = -0.5, v_t = v - (t - t^C)/Zs
-        acoustic::mixedState(tL, vL, 0, vector(0, -0.5, 0), n, 2, 1, tC, vC);
+        acousticFormulas::mixedState(tL, vL, 0, vector(0, -0.5, 0), n, 2, 1, tC, vC);
         check("Coulomb slip t_t", tC.y(), -0.5);
         check("Coulomb slip v_t", vC.y(), 2 - (1 - (-0.5))/1);
     }

@@ -3,20 +3,20 @@
   solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
 \*---------------------------------------------------------------------------*/
 
-#include "unlimited.H"
+#include "none.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
 {
 namespace limiters
 {
-    defineTypeNameAndDebug(unlimited, 0);
-    addToRunTimeSelectionTable(limiter, unlimited, dictionary);
+    defineTypeNameAndDebug(none, 0);
+    addToRunTimeSelectionTable(limiter, none, dictionary);
 }
 }
 
 
-void Foam::limiters::unlimited::limit
+void Foam::limiters::none::limit
 (
     const dualMesh& dual,
     const UList<fluxState>& q,

@@ -71,38 +71,28 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
         return;
     }
 
-    switch (friction_.type())
+    // The stick state (the wall's velocity); the friction law decides
+    // whether it holds or the point slips with the traction it allows
+    const vector tStick
+    (
+        acousticFormulas::velocityTraction(tL, v, velocity_, nc, Zp, Zs)
+    );
+    bool stick = false;
+    const vector ttC
+    (
+        friction_.tangentialTraction
+        (
+            acousticFormulas::tangential(tStick, nc), tnTrial, stick
+        )
+    );
+    if (stick)
     {
-        case frictionLaw::model::frictionless:
-        {
-            acousticFormulas::mixedState(tL, v, vWallN, Zero, nc, Zp, Zs, tC, vC);
-            break;
-        }
-        case frictionLaw::model::stick:
-        {
-            vC = velocity_;
-            tC = acousticFormulas::velocityTraction(tL, v, vC, nc, Zp, Zs);
-            break;
-        }
-        case frictionLaw::model::coulomb:
-        {
-            // Trial stick; slip when the tangential traction exceeds k |t_n|
-            tC = acousticFormulas::velocityTraction(tL, v, velocity_, nc, Zp, Zs);
-            const vector tt(acousticFormulas::tangential(tC, nc));
-            const scalar limit = -friction_.coefficient()*tnTrial;
-            if (mag(tt) <= limit)
-            {
-                vC = velocity_;
-            }
-            else
-            {
-                acousticFormulas::mixedState
-                (
-                    tL, v, vWallN, (limit/mag(tt))*tt, nc, Zp, Zs, tC, vC
-                );
-            }
-            break;
-        }
+        tC = tStick;
+        vC = velocity_;
+    }
+    else
+    {
+        acousticFormulas::mixedState(tL, v, vWallN, ttC, nc, Zp, Zs, tC, vC);
     }
 }
 

@@ -436,31 +436,30 @@ void Foam::contactPair::pairState
         if (ZB > VSMALL) vtB = vBt + (tBt - tt)/ZB;
     };
 
-    if (friction_.type() == frictionLaw::model::frictionless || !shear)
+    if (!shear)
     {
         slipWith(Zero);
     }
     else
     {
+        // The stick state; the friction law decides whether it holds or
+        // the sides slip with the traction it allows
         const vector vtStick((ZA*vAt + ZB*vBt + tBt - tAt)/(ZA + ZB));
         const vector ttStick
         (
             (ZA*ZB/(ZA + ZB))*(tAt/ZA + tBt/ZB + vBt - vAt)
         );
-        const scalar limit = -friction_.coefficient()*tnC;
-        if
-        (
-            friction_.type() == frictionLaw::model::stick
-         || mag(ttStick) <= limit
-        )
+        bool stick = false;
+        const vector tt(friction_.tangentialTraction(ttStick, tnC, stick));
+        if (stick)
         {
-            ttC = ttStick;
+            ttC = tt;
             vtA = vtStick;
             vtB = vtStick;
         }
         else
         {
-            slipWith((limit/mag(ttStick))*ttStick);
+            slipWith(tt);
         }
     }
 

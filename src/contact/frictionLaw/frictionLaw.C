@@ -40,6 +40,35 @@ Foam::frictionLaw::frictionLaw(const dictionary& dict, const string& owner)
 }
 
 
+Foam::vector Foam::frictionLaw::tangentialTraction
+(
+    const vector& ttStick,
+    const scalar tn,
+    bool& stick
+) const
+{
+    switch (model_)
+    {
+        case model::stick:
+        {
+            stick = true;
+            return ttStick;
+        }
+        case model::coulomb:
+        {
+            const scalar limit = -k_*tn;
+            stick = (mag(ttStick) <= limit);
+            return stick ? ttStick : (limit/mag(ttStick))*ttStick;
+        }
+        default:
+        {
+            stick = false;
+            return Zero;
+        }
+    }
+}
+
+
 void Foam::frictionLaw::describe(Ostream& os) const
 {
     switch (model_)

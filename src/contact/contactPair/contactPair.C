@@ -409,8 +409,16 @@ void Foam::contactPair::pairState
     // Traction of B measured with A's normal: t^R = -P^B N^B
     const vector tB(-tBown);
 
-    contactRiemannSolver::side L{tA & n, vA & n, mA.rho(), mA.cp(), a.Lambda};
-    contactRiemannSolver::side R{tB & n, vB & n, mB.rho(), mB.cp(), b.Lambda};
+    contactRiemannSolver::side L
+    {
+        tA & n, vA & n, mA.rho(), mA.cp(), a.Lambda,
+        mA.hugoniot() ? mA.hugoniotS() : 0
+    };
+    contactRiemannSolver::side R
+    {
+        tB & n, vB & n, mB.rho(), mB.cp(), b.Lambda,
+        mB.hugoniot() ? mB.hugoniotS() : 0
+    };
     scalar vnC, tnC;
     riemann_->normalState(L, R, vnC, tnC);
 
@@ -530,11 +538,19 @@ Foam::contactPair::contactPair
     matchDirection_(getFiniteOrDefault<vector>(dict, "matchDirection", Zero)),
     maxPenetration_(0)
 {
+    if (dict.found("s"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Contact pair '" << name << "': keyword 's' is not used. The"
+            << " Hugoniot slope of each side comes from its material:"
+            << " hugoniot { s ...; } in the body's solidProperties"
+            << exit(FatalIOError);
+    }
     checkKeywords
     (
         dict,
         {
-            "bodyA", "patchA", "bodyB", "patchB", "riemannSolver", "s",
+            "bodyA", "patchA", "bodyB", "patchB", "riemannSolver",
             "friction", "matchDirection"
         }
     );
@@ -749,6 +765,13 @@ void Foam::contactPair::describe(Ostream& os) const
         << ", " << returnReduce(A_.points.size(), sumOp<label>())
         << " point pairs, Riemann solver ";
     riemann_->describe(os);
+    if (riemann_->type() == "hugoniot")
+    {
+        const materialModel& mA = A_.body->material();
+        const materialModel& mB = B_.body->material();
+        os  << " (s " << (mA.hugoniot() ? mA.hugoniotS() : 0) << " / "
+            << (mB.hugoniot() ? mB.hugoniotS() : 0) << ")";
+    }
     os  << ", friction ";
     friction_.describe(os);
     os  << nl;

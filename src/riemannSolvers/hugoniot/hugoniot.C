@@ -17,16 +17,8 @@ namespace contactRiemannSolvers
 }
 
 
-Foam::contactRiemannSolvers::hugoniot::hugoniot(const dictionary& dict)
-:
-    s_(dict.get<scalar>("s"))
-{
-    if (s_ < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 's' = " << s_ << " must be >= 0" << exit(FatalIOError);
-    }
-}
+Foam::contactRiemannSolvers::hugoniot::hugoniot(const dictionary&)
+{}
 
 
 void Foam::contactRiemannSolvers::hugoniot::normalState
@@ -37,7 +29,7 @@ void Foam::contactRiemannSolvers::hugoniot::normalState
     scalar& tnC
 ) const
 {
-    if (L.vn <= R.vn || s_ == 0)
+    if (L.vn <= R.vn || (L.s == 0 && R.s == 0))
     {
         acoustic::solve(L, R, vnC, tnC);
         return;
@@ -45,10 +37,22 @@ void Foam::contactRiemannSolvers::hugoniot::normalState
 
     const scalar mL = L.Lambda*L.rho, mR = R.Lambda*R.rho;
     const scalar ZL = L.rho*L.c, ZR = R.rho*R.c;
-    const scalar a = s_*(mR - mL);
-    const scalar b = ZL + ZR - 2*s_*(mR*R.vn - mL*L.vn);
-    const scalar c0 =
-        -(R.tn - L.tn + ZL*L.vn + ZR*R.vn - s_*(mR*sqr(R.vn) - mL*sqr(L.vn)));
+    scalar a, b, c0;
+    if (L.s == R.s)
+    {
+        // (one slope: the factored form)
+        const scalar s = L.s;
+        a = s*(mR - mL);
+        b = ZL + ZR - 2*s*(mR*R.vn - mL*L.vn);
+        c0 = -(R.tn - L.tn + ZL*L.vn + ZR*R.vn - s*(mR*sqr(R.vn) - mL*sqr(L.vn)));
+    }
+    else
+    {
+        const scalar sL = L.s*mL, sR = R.s*mR;
+        a = sR - sL;
+        b = ZL + ZR - 2*(sR*R.vn - sL*L.vn);
+        c0 = -(R.tn - L.tn + ZL*L.vn + ZR*R.vn - (sR*sqr(R.vn) - sL*sqr(L.vn)));
+    }
 
     if (mag(a) < 1e-12*mag(b))
     {
@@ -59,7 +63,7 @@ void Foam::contactRiemannSolvers::hugoniot::normalState
         // The root that tends to -c0/b as a -> 0
         vnC = 2*(-c0)/(b + sqrt(max(b*b - 4*a*c0, scalar(0))));
     }
-    tnC = L.tn + ZL*(vnC - L.vn) - s_*mL*sqr(vnC - L.vn);
+    tnC = L.tn + ZL*(vnC - L.vn) - L.s*mL*sqr(vnC - L.vn);
 }
 
 

@@ -70,28 +70,27 @@ int main(int argc, char *argv[])
 
     Info<< "Hugoniot check: identical bars, c 100, rho 0.01, v0 100, s 1" << endl;
     {
-        const dictionary dict((IStringStream("s 1;"))());
+        const dictionary dict;
         contactRiemannSolvers::hugoniot solver(dict);
-        side L{0, 100, 0.01, 100, 1}, R{0, 0, 0.01, 100, 1};
+        side L{0, 100, 0.01, 100, 1, 1}, R{0, 0, 0.01, 100, 1, 1};
         scalar v, t;
         solver.normalState(L, R, v, t);
         check("v^C", v, 50);
         check("t_n^C", t, -75);
 
-        const dictionary dict0((IStringStream("s 0;"))());
-        contactRiemannSolvers::hugoniot solver0(dict0);
-        solver0.normalState(L, R, v, t);
+        side L0{0, 100, 0.01, 100, 1, 0}, R0{0, 0, 0.01, 100, 1, 0};
+        solver.normalState(L0, R0, v, t);
         check("s = 0: v^C (acoustic)", v, 50);
         check("s = 0: t_n^C (acoustic)", t, -50);
 
         // Expansive jump: acoustic answer
-        side Le{0, 0, 0.01, 100, 1}, Re{0, 100, 0.01, 100, 1};
+        side Le{0, 0, 0.01, 100, 1, 1}, Re{0, 100, 0.01, 100, 1, 1};
         solver.normalState(Le, Re, v, t);
         check("expansive: t_n^C (acoustic)", t, 50);
 
         // Dissimilar (A4): rho_R = 0.02, c_R = 100/sqrt2; the root satisfies
         // the quadratic and the R-side Hugoniot
-        side Rd{0, 0, 0.02, 100/Foam::sqrt(2.0), 1};
+        side Rd{0, 0, 0.02, 100/Foam::sqrt(2.0), 1, 1};
         solver.normalState(L, Rd, v, t);
         // R side: t^C = t_R - rho_R c_R (v^C - v_R) - s rho_R (v^C - v_R)^2
         check
@@ -99,6 +98,18 @@ int main(int argc, char *argv[])
             "dissimilar: R-side Hugoniot",
             t,
             -0.02*(100/Foam::sqrt(2.0))*v - 0.02*sqr(v)
+        );
+
+        // Different slopes (s_L = 1, s_R = 0.5, each from its material):
+        // the state lies on both sides' Hugoniots
+        side Rs{0, 0, 0.02, 100/Foam::sqrt(2.0), 1, 0.5};
+        solver.normalState(L, Rs, v, t);
+        check("slopes 1 / 0.5: L-side Hugoniot", t, 0.01*100*(v - 100) - 0.01*sqr(v - 100));
+        check
+        (
+            "slopes 1 / 0.5: R-side Hugoniot",
+            t,
+            -0.02*(100/Foam::sqrt(2.0))*v - 0.5*0.02*sqr(v)
         );
     }
 

@@ -29,7 +29,7 @@ Foam::solidBoundaryConditions::rigidWall::rigidWall
     point_(getFinite<point>(dict, "point")),
     normal_(getFinite<vector>(dict, "normal")),
     velocity_(getFiniteOrDefault<vector>(dict, "velocity", Zero)),
-    friction_(dict, "patch '" + patchName() + "'")
+    friction_(frictionLaw::New(dict, "patch '" + patchName() + "'"))
 {
     if (mag(normal_) < SMALL)
     {
@@ -80,7 +80,7 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
     bool stick = false;
     const vector ttC
     (
-        friction_.tangentialTraction
+        friction_->tangentialTraction
         (
             acousticFormulas::tangential(tStick, nc), tnTrial, stick
         )
@@ -101,7 +101,7 @@ void Foam::solidBoundaryConditions::rigidWall::describe(Ostream& os) const
 {
     os  << "rigid wall at " << point_ << ", normal " << normal_
         << ", velocity " << velocity_ << ", friction ";
-    friction_.describe(os);
+    friction_->describe(os);
 }
 
 

@@ -458,7 +458,7 @@ void Foam::contactPair::pairState
             (ZA*ZB/(ZA + ZB))*(tAt/ZA + tBt/ZB + vBt - vAt)
         );
         bool stick = false;
-        const vector tt(friction_.tangentialTraction(ttStick, tnC, stick));
+        const vector tt(friction_->tangentialTraction(ttStick, tnC, stick));
         if (stick)
         {
             ttC = tt;
@@ -534,7 +534,7 @@ Foam::contactPair::contactPair
     name_(name),
     dict_(dict),
     riemann_(contactRiemannSolver::New(dict)),
-    friction_(dict, "contact pair '" + name + "'"),
+    friction_(frictionLaw::New(dict, "contact pair '" + name + "'")),
     matchDirection_(getFiniteOrDefault<vector>(dict, "matchDirection", Zero)),
     maxPenetration_(0)
 {
@@ -546,14 +546,12 @@ Foam::contactPair::contactPair
             << " hugoniot { s ...; } in the body's solidProperties"
             << exit(FatalIOError);
     }
-    checkKeywords
+    wordList allowed
     (
-        dict,
-        {
-            "bodyA", "patchA", "bodyB", "patchB", "riemannSolver",
-            "friction", "matchDirection"
-        }
+        {"bodyA", "patchA", "bodyB", "patchB", "riemannSolver", "matchDirection"}
     );
+    allowed.append(friction_->keywords());
+    checkKeywords(dict, allowed);
     auto findBody = [&](const word& key) -> solidBody&
     {
         const word bodyName(dict.get<word>(key));
@@ -773,7 +771,7 @@ void Foam::contactPair::describe(Ostream& os) const
             << (mB.hugoniot() ? mB.hugoniotS() : 0) << ")";
     }
     os  << ", friction ";
-    friction_.describe(os);
+    friction_->describe(os);
     os  << nl;
 }
 

@@ -5,78 +5,59 @@
 
 #include "frictionLaw.H"
 #include "ITstream.H"
+#include "FlatOutput.H"
 
-Foam::frictionLaw::frictionLaw(const dictionary& dict, const string& owner)
-:
-    model_(model::frictionless),
-    k_(0)
+namespace Foam
 {
-    if (!dict.found("friction"))
-    {
-        return;
-    }
-    ITstream& is = dict.lookup("friction");
-    const token tok(is);
-    if (tok.isWord() && tok.wordToken() == "frictionless")
-    {
-        model_ = model::frictionless;
-    }
-    else if (tok.isWord() && tok.wordToken() == "stick")
-    {
-        model_ = model::stick;
-    }
-    else if (tok.isNumber() && tok.number() >= 0)
-    {
-        k_ = tok.number();
-        model_ = (k_ > 0) ? model::coulomb : model::frictionless;
-    }
-    else
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'friction' of " << owner.c_str() << " is " << tok
-            << "; allowed: frictionless, stick, or a Coulomb coefficient >= 0"
-            << exit(FatalIOError);
-    }
+    defineTypeNameAndDebug(frictionLaw, 0);
+    defineRunTimeSelectionTable(frictionLaw, dictionary);
 }
 
 
-Foam::vector Foam::frictionLaw::tangentialTraction
+Foam::autoPtr<Foam::frictionLaw> Foam::frictionLaw::New
 (
-    const vector& ttStick,
-    const scalar tn,
-    bool& stick
-) const
+    const dictionary& dict,
+    const string& owner
+)
 {
-    switch (model_)
+    // A number selects Coulomb (k = 0: frictionless slip); a word any
+    // other law by its type name
+    word lawType("frictionless");
+    if (dict.found("friction"))
     {
-        case model::stick:
+        ITstream& is = dict.lookup("friction");
+        const token tok(is);
+        if (tok.isNumber() && tok.number() >= 0)
         {
-            stick = true;
-            return ttStick;
+            lawType = (tok.number() > 0) ? "coulomb" : "frictionless";
         }
-        case model::coulomb:
+        else if
+        (
+            tok.isWord() && tok.wordToken() != "coulomb"
+         && dictionaryConstructorTablePtr_->found(tok.wordToken())
+        )
         {
-            const scalar limit = -k_*tn;
-            stick = (mag(ttStick) <= limit);
-            return stick ? ttStick : (limit/mag(ttStick))*ttStick;
+            lawType = tok.wordToken();
         }
-        default:
+        else
         {
-            stick = false;
-            return Zero;
+            wordList names;
+            for (const word& n : dictionaryConstructorTablePtr_->sortedToc())
+            {
+                if (n != "coulomb")
+                {
+                    names.append(n);
+                }
+            }
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'friction' of " << owner.c_str() << " is "
+                << tok << "; allowed: " << flatOutput(names)
+                << ", or a Coulomb coefficient >= 0" << exit(FatalIOError);
         }
     }
-}
 
-
-void Foam::frictionLaw::describe(Ostream& os) const
-{
-    switch (model_)
-    {
-        case model::frictionless: os << "frictionless"; break;
-        case model::stick: os << "stick"; break;
-        case model::coulomb: os << "Coulomb k = " << k_; break;
-    }
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(lawType);
+    return autoPtr<frictionLaw>(cstrIter()(dict));
 }
 
 

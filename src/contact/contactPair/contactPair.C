@@ -485,8 +485,8 @@ Foam::scalar Foam::contactPair::addSideFluxes
 {
     solidBody& body = *side.body;
     const dualMesh::patchSubFaces& sf = body.dual().subFaces(side.patchi);
-    List<vector>& Rp = body.momentumResidual();
-    List<tensor>& RF = body.deformationResidual();
+    List<vector>& Rp = body.residual().momentum;
+    List<tensor>& RF = body.residual().F;
 
     side.force = Zero;
     scalar power = 0;
@@ -647,7 +647,10 @@ void Foam::contactPair::addFluxes()
         pairState(A_.closed[i], a, b, A_.tC[i], A_.vC[i], vOther);
         if (A_.closed[i])
         {
-            A_.body->setSurfaceVelocity(A_.points[i], A_.vC[i]);
+            A_.body->residual().prescribeSurfaceVelocity
+            (
+                A_.points[i], A_.vC[i]
+            );
             const scalar pen = -pairGap(a, b);
             maxPenetration_ = max(maxPenetration_, pen/a.length);
         }
@@ -660,7 +663,10 @@ void Foam::contactPair::addFluxes()
         pairState(B_.closed[i], a, b, tC, vOther, B_.vC[i]);
         if (B_.closed[i])
         {
-            B_.body->setSurfaceVelocity(B_.points[i], B_.vC[i]);
+            B_.body->residual().prescribeSurfaceVelocity
+            (
+                B_.points[i], B_.vC[i]
+            );
         }
         B_.tC[i] = -tC;
     }
@@ -669,11 +675,11 @@ void Foam::contactPair::addFluxes()
     // A: its own integrated tractions.  B: minus the forces of its
     // partners on A (summed over the processor copies of a partner, shared
     // by B's processor copies of the point through the point weights)
-    A_.body->addContactPower(addSideFluxes(A_, true));
-    B_.body->addContactPower(addSideFluxes(B_, false));
+    A_.body->residual().power += addSideFluxes(A_, true);
+    B_.body->residual().power += addSideFluxes(B_, false);
 
     const vectorField forceA(allGather(A_.force));
-    List<vector>& RpB = B_.body->momentumResidual();
+    List<vector>& RpB = B_.body->residual().momentum;
     const scalarField& wB = B_.body->dual().pointWeights();
     forAll(B_.points, i)
     {

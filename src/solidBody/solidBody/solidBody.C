@@ -322,7 +322,6 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     E0_(0),
     Dplastic_(0),
     dDplastic_(),
-    power_(0),
     invalidPoint_(Zero),
     invalidValue_(0),
     invalidQuantity_()
@@ -349,12 +348,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     x_.setSize(nPts);
     P_.setSize(nPts);
     SigmaJ_.setSize(nPts);
-    Rp_.setSize(nPts);
-    RF_.setSize(nPts);
-    if (JLaw_)
-    {
-        RJ_.setSize(nPts);
-    }
+    residual_.setSize(nPts, JLaw_);
     if (secondOrder_)
     {
         q_.setSize(nPts);
@@ -564,7 +558,13 @@ Foam::vector2D Foam::solidBody::interiorProduction
 }
 
 
-void Foam::solidBody::assembleResiduals(const scalar t)
+void Foam::solidBody::startStage()
+{
+    residual_.reset();
+}
+
+
+void Foam::solidBody::addInteriorFluxes()
 {
     const labelList& es = dual_.edgeStart();
     const labelList& ee = dual_.edgeEnd();
@@ -582,15 +582,6 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     // upwind impedance grows with the jump
     const bool shock = material_->hugoniot();
     const scalar rhoS = material_->rho()*material_->hugoniotS();
-
-    Rp_ = Zero;
-    RF_ = Zero;
-    if (JLaw_)
-    {
-        RJ_ = 0;
-    }
-    surfacePoints_.clear();
-    surfaceVelocities_.clear();
 
     if (secondOrder_)
     {
@@ -669,7 +660,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
                 fluxVelocity(qL), fluxVelocity(qR),
                 fluxStress(qL), fluxStress(qR),
                 fluxSigmaJ(qL), fluxSigmaJ(qR),
-                Rp_, RF_, RJ_
+                residual_.momentum, residual_.F, residual_.J
             );
         }
     }
@@ -681,7 +672,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
             addEdgeFlux
             (
                 e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
-                Rp_, RF_, RJ_
+                residual_.momentum, residual_.F, residual_.J
             );
         }
     }
@@ -698,14 +689,14 @@ void Foam::solidBody::assembleResiduals(const scalar t)
     {
         const vector2D S2
         (
-            returnReduce(interiorProduction(Rp_, RF_, RJ_), sumOp<vector2D>())
+            returnReduce(interiorProduction(residual_.momentum, residual_.F, residual_.J), sumOp<vector2D>())
         );
 
         // (Productions within rounding of zero, as in uniform motion, are
         // left alone)
         if (S2.x() > 1e-12*S2.y())
         {
-            const label nPts = Rp_.size();
+            const label nPts = residual_.momentum.size();
             if (Rp0_.size() != nPts)
             {
                 Rp0_.setSize(nPts);
@@ -735,25 +726,31 @@ void Foam::solidBody::assembleResiduals(const scalar t)
             );
             const scalar theta = S0 < 0 ? -S0/(S2.x() - S0) : 0;
 
-            forAll(Rp_, i)
+            forAll(residual_.momentum, i)
             {
-                Rp_[i] = Rp0_[i] + theta*(Rp_[i] - Rp0_[i]);
-                RF_[i] = RF0_[i] + theta*(RF_[i] - RF0_[i]);
+                residual_.momentum[i] = Rp0_[i] + theta*(residual_.momentum[i] - Rp0_[i]);
+                residual_.F[i] = RF0_[i] + theta*(residual_.F[i] - RF0_[i]);
             }
-            forAll(RJ_, i)
+            forAll(residual_.J, i)
             {
-                RJ_[i] = RJ0_[i] + theta*(RJ_[i] - RJ0_[i]);
+                residual_.J[i] = RJ0_[i] + theta*(residual_.J[i] - RJ0_[i]);
             }
             ++nEnergyLimited_;
             minEnergyTheta_ = min(minEnergyTheta_, theta);
         }
     }
 
-    // Boundary fluxes
-    power_ = 0;
+}
+
+
+void Foam::solidBody::addBoundaryFluxes(const scalar t)
+{
+    const List<tensor>& H = Hc();
+    const scalar Zp = material_->Zp();
+    const scalar Zs = material_->Zs();
     for (const solidBoundaryCondition& bc : bcs_)
     {
-        power_ += bc.addFluxes(x_, v_, P_, H, Zp, Zs, t, Rp_, RF_);
+        residual_.power += bc.addFluxes(x_, v_, P_, H, Zp, Zs, t, residual_.momentum, residual_.F);
     }
 
 }
@@ -761,12 +758,7 @@ void Foam::solidBody::assembleResiduals(const scalar t)
 
 void Foam::solidBody::finishResiduals()
 {
-    dual_.syncPointResidual(Rp_);
-    dual_.syncPointResidual(RF_);
-    if (JLaw_)
-    {
-        dual_.syncPointResidual(RJ_);
-    }
+    residual_.synchronise(dual_);
 
     // Body force power
     if (magSqr(bodyForce_) > 0)
@@ -776,10 +768,10 @@ void Foam::solidBody::finishResiduals()
         const scalar rho = material_->rho();
         forAll(v_, i)
         {
-            power_ += w[i]*V[i]*rho*(bodyForce_ & v_[i]);
+            residual_.power += w[i]*V[i]*rho*(bodyForce_ & v_[i]);
         }
     }
-    reduce(power_, sumOp<scalar>());
+    reduce(residual_.power, sumOp<scalar>());
 }
 
 
@@ -934,17 +926,17 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
     const scalar b = 1 - a;
 
     // Points in closed contact: displacement from the contact velocity
-    List<vector> uSurface(surfacePoints_.size());
-    forAll(surfacePoints_, k)
+    List<vector> uSurface(residual_.surfacePoints.size());
+    forAll(residual_.surfacePoints, k)
     {
-        const label i = surfacePoints_[k];
-        uSurface[k] = a*u0_[i] + b*(u_[i] + dt*surfaceVelocities_[k]);
+        const label i = residual_.surfacePoints[k];
+        uSurface[k] = a*u0_[i] + b*(u_[i] + dt*residual_.surfaceVelocities[k]);
     }
 
     forAll(lm_, i)
     {
         const scalar invV = 1.0/V[i];
-        const tensor Drate(invV*RF_[i]);
+        const tensor Drate(invV*residual_.F[i]);
 
         // Rates of H and J use the stage's F and H (before the update)
         if (HLaw_)
@@ -954,19 +946,25 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
         if (JLaw_)
         {
             J_[i] =
-                a*J0_[i] + b*(J_[i] + dt*((H[i] && Drate) + invV*RJ_[i]));
+                a*J0_[i] + b*(J_[i] + dt*((H[i] && Drate) + invV*residual_.J[i]));
         }
 
-        lm_[i] = a*lm0_[i] + b*(lm_[i] + dt*(invV*Rp_[i] + rhoB));
+        lm_[i] = a*lm0_[i] + b*(lm_[i] + dt*(invV*residual_.momentum[i] + rhoB));
         u_[i] = a*u0_[i] + b*(u_[i] + dt*v_[i]);
         F_[i] = a*F0_[i] + b*(F_[i] + dt*Drate);
     }
 
-    forAll(surfacePoints_, k)
+    forAll(residual_.surfacePoints, k)
     {
-        u_[surfacePoints_[k]] = uSurface[k];
+        u_[residual_.surfacePoints[k]] = uSurface[k];
     }
 
+    Wext_ = a*Wext0_ + b*(Wext_ + dt*residual_.power);
+}
+
+
+void Foam::solidBody::applyConstraints()
+{
     // Symmetry planes: no normal velocity or displacement
     forAll(constrainedPoints_, k)
     {
@@ -976,8 +974,6 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
     }
 
     tiePlaneStrainPairs();
-
-    Wext_ = a*Wext0_ + b*(Wext_ + dt*power_);
 }
 
 

@@ -31,7 +31,7 @@ Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
 namespace
 {
 
-// Residuals of all bodies including contact fluxes, at time t
+// The residuals of all bodies at time t, in the order of doc/stage.md
 void residuals
 (
     Foam::PtrList<Foam::solidBody>& bodies,
@@ -41,7 +41,15 @@ void residuals
 {
     for (Foam::solidBody& b : bodies)
     {
-        b.assembleResiduals(t);
+        b.startStage();
+    }
+    for (Foam::solidBody& b : bodies)
+    {
+        b.addInteriorFluxes();
+    }
+    for (Foam::solidBody& b : bodies)
+    {
+        b.addBoundaryFluxes(t);
     }
     for (Foam::contactPair& c : contacts)
     {
@@ -76,6 +84,7 @@ Foam::label Foam::tvdRungeKutta2::step
     forAll(bodies, b)
     {
         bodies[b].rkStage(dt, 0);
+        bodies[b].applyConstraints();
         if (!bodies[b].updateConstitutive())
         {
             return b;
@@ -85,6 +94,7 @@ Foam::label Foam::tvdRungeKutta2::step
     forAll(bodies, b)
     {
         bodies[b].rkStage(dt, 0.5);
+        bodies[b].applyConstraints();
         if (!bodies[b].updateConstitutive())
         {
             return b;

@@ -1,0 +1,42 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "stageResidual.H"
+#include "dualMesh.H"
+
+void Foam::stageResidual::setSize(const label nPoints, const bool JLaw)
+{
+    momentum.setSize(nPoints);
+    F.setSize(nPoints);
+    J.setSize(JLaw ? nPoints : 0);
+    JLaw_ = JLaw;
+    power = 0;
+}
+
+
+void Foam::stageResidual::reset()
+{
+    momentum = Zero;
+    F = Zero;
+    J = 0;
+    power = 0;
+    surfacePoints.clear();
+    surfaceVelocities.clear();
+}
+
+
+void Foam::stageResidual::synchronise(const dualMesh& dual)
+{
+    dual.syncPointResidual(momentum);
+    dual.syncPointResidual(F);
+    // (collective: decided by the J law, not by this processor's size)
+    if (JLaw_)
+    {
+        dual.syncPointResidual(J);
+    }
+}
+
+
+// ************************************************************************* //

@@ -35,7 +35,7 @@ void Foam::solidBody::readScheme()
         scheme,
         {
             "secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw",
-            "energyStable"
+            "energyStable", "riemannSolver"
         }
     );
 
@@ -308,6 +308,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     HLaw_(false),
     secondOrder_(true),
     limiter_(),
+    riemann_(),
     energyStable_(false),
     nEnergyLimited_(0),
     minEnergyTheta_(1),
@@ -334,6 +335,10 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
 
     readScheme();
     material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
+    riemann_ = interiorRiemannSolver::New
+    (
+        dict_.subOrEmptyDict("scheme"), material_()
+    );
     createBoundaryConditions();
     setConstraints();
     setPlaneStrainPairs();
@@ -573,15 +578,8 @@ void Foam::solidBody::addInteriorFluxes()
     const pointField& X = mesh_.points();
     const List<tensor>& H = Hc();
 
-    const scalar Zp = material_->Zp();
-    const scalar Zs = material_->Zs();
-    const scalar Sfactor = 0.5/Zp;
-
-    // Hugoniot materials: compressive jumps travel at the shock speed
-    // c + s Lambda [[v_n]] (doc/method.md, homogeneous Hugoniot solver): the
-    // upwind impedance grows with the jump
-    const bool shock = material_->hugoniot();
-    const scalar rhoS = material_->rho()*material_->hugoniotS();
+    const scalar Sfactor = 0.5/material_->Zp();
+    const interiorRiemannSolver& riemann = riemann_();
 
     if (secondOrder_)
     {
@@ -613,19 +611,8 @@ void Foam::solidBody::addInteriorFluxes()
         const vector hN(0.5*((H[i] & N) + (H[j] & N)));
         const vector n(hN/mag(hN));
 
-        scalar Zn = Zp;
-        if (shock)
-        {
-            const scalar closing = (vL - vR) & n;
-            if (closing > 0)
-            {
-                Zn += rhoS*mag(hN)*closing;
-            }
-        }
-        const vector tC
-        (
-            A*acousticFormulas::stickTraction(PL & N, PR & N, vL, vR, n, Zn, Zs)
-        );
+        // The upwind traction (the body's interior Riemann solver)
+        const vector tC(A*riemann.traction(PL & N, PR & N, vL, vR, n, mag(hN)));
         Rp[i] += tC;
         Rp[j] -= tC;
 
@@ -1151,12 +1138,15 @@ void Foam::solidBody::describe(Ostream& os) const
         << nl << "    scheme     ";
     if (secondOrder_)
     {
-        os  << "second order, limiter " << limiter_->type().c_str() << nl;
+        os  << "second order, limiter " << limiter_->type().c_str();
     }
     else
     {
-        os  << "first order (Godunov)" << nl;
+        os  << "first order (Godunov)";
     }
+    os  << ", Riemann solver ";
+    riemann_->describe(os);
+    os  << nl;
     if (planeStrainA_.size())
     {
         os  << "    plane strain: both copies of "

@@ -362,19 +362,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     }
     if (energyStable_)
     {
-        edgeAreaSum_.setSize(nPts, Zero);
-        edgeAreaMag_.setSize(nPts, 0);
-        const labelList& es = dual_.edgeStart();
-        const labelList& ee = dual_.edgeEnd();
-        const vectorField& Ne = dual_.edgeNormals();
-        const scalarField& Ae = dual_.edgeMagSf();
-        forAll(es, e)
-        {
-            edgeAreaSum_[es[e]] += Ae[e]*Ne[e];
-            edgeAreaSum_[ee[e]] -= Ae[e]*Ne[e];
-            edgeAreaMag_[es[e]] += Ae[e];
-            edgeAreaMag_[ee[e]] += Ae[e];
-        }
+        energyStability_.reset(new energyStability(dual_, JLaw_));
     }
 
     if (!updateConstitutive())
@@ -527,42 +515,6 @@ bool Foam::solidBody::updateConstitutive()
 }
 
 
-Foam::vector2D Foam::solidBody::interiorProduction
-(
-    const List<vector>& Rp,
-    const List<tensor>& RF,
-    const List<scalar>& RJ
-) const
-{
-    // Per edge, the fluxes add t.(v_i - v_j) + v_avg.(t_i - t_j)
-    // + dS (Sigma_J,i - Sigma_J,j) to the rate, of which
-    // A (t_i.v_i - t_j.v_j) (t = P N) only moves energy between the two
-    // points.  Summed over the edges and regrouped by point, that
-    // telescoping part is v_i.P_i.S_i with S_i = sum of the point's
-    // outward edge area vectors (fixed, reference configuration).  One
-    // pass over the points, with the residuals as they are after the edge
-    // loop, gives the production.  The second component is the scale of
-    // its rounding error (|v| |P| times the point's total edge area).
-    vector2D prod(Zero);
-    forAll(Rp, i)
-    {
-        const vector& v = v_[i];
-        const tensor& P = P_[i];
-        prod.x() +=
-            (v & Rp[i]) + (P && RF[i]) - (v & (P & edgeAreaSum_[i]));
-        prod.y() += mag(v)*mag(P)*edgeAreaMag_[i];
-    }
-    if (JLaw_)
-    {
-        forAll(RJ, i)
-        {
-            prod.x() += SigmaJ_[i]*RJ[i];
-        }
-    }
-    return prod;
-}
-
-
 void Foam::solidBody::startStage()
 {
     residual_.reset();
@@ -664,64 +616,28 @@ void Foam::solidBody::addInteriorFluxes()
         }
     }
 
-    // Energy stability: the residuals, and so the body's energy rate
-    // sum v.Rp + P:RF + Sigma_J RJ, are linear in a blend
-    // R = R0 + theta (R2 - R0) of the first- and second-order interior
-    // residuals.  If the second-order fluxes produce energy, take the
-    // theta that makes their production zero: the interior fluxes then
-    // never create energy (with Sigma_J = dW/dJ the rate is exactly the
-    // energy's, materialModel.H).  One theta for the whole body, over all
-    // processors, keeps the blend smooth in space.
+    // Energy stability (energyStability.H): blend towards the first-order
+    // interior residuals where the second-order ones produce energy
     if (energyStable_)
     {
-        const vector2D S2
+        const scalar theta = energyStability_->apply
         (
-            returnReduce(interiorProduction(residual_.momentum, residual_.F, residual_.J), sumOp<vector2D>())
+            residual_, v_, P_, SigmaJ_,
+            [&](stageResidual& R0)
+            {
+                forAll(es, e)
+                {
+                    const label i = es[e], j = ee[e];
+                    addEdgeFlux
+                    (
+                        e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
+                        R0.momentum, R0.F, R0.J
+                    );
+                }
+            }
         );
-
-        // (Productions within rounding of zero, as in uniform motion, are
-        // left alone)
-        if (S2.x() > 1e-12*S2.y())
+        if (theta >= 0)
         {
-            const label nPts = residual_.momentum.size();
-            if (Rp0_.size() != nPts)
-            {
-                Rp0_.setSize(nPts);
-                RF0_.setSize(nPts);
-                RJ0_.setSize(JLaw_ ? nPts : 0);
-            }
-            Rp0_ = Zero;
-            RF0_ = Zero;
-            RJ0_ = 0;
-            forAll(es, e)
-            {
-                const label i = es[e], j = ee[e];
-                addEdgeFlux
-                (
-                    e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
-                    Rp0_, RF0_, RJ0_
-                );
-            }
-            const scalar S0 = min
-            (
-                returnReduce
-                (
-                    interiorProduction(Rp0_, RF0_, RJ0_).x(),
-                    sumOp<scalar>()
-                ),
-                0
-            );
-            const scalar theta = S0 < 0 ? -S0/(S2.x() - S0) : 0;
-
-            forAll(residual_.momentum, i)
-            {
-                residual_.momentum[i] = Rp0_[i] + theta*(residual_.momentum[i] - Rp0_[i]);
-                residual_.F[i] = RF0_[i] + theta*(residual_.F[i] - RF0_[i]);
-            }
-            forAll(residual_.J, i)
-            {
-                residual_.J[i] = RJ0_[i] + theta*(residual_.J[i] - RJ0_[i]);
-            }
             ++nEnergyLimited_;
             minEnergyTheta_ = min(minEnergyTheta_, theta);
         }

@@ -100,10 +100,10 @@ void Foam::contactPair::setSide
         side.length[i] = body.dual().lengths()[side.points[i]];
     }
     side.project.setSize(side.points.size(), I);
-    const List<tensor>& proj = body.constraintProjections();
-    forAll(body.constrainedPoints(), k)
+    const List<tensor>& proj = body.symmetry().projections();
+    forAll(body.symmetry().points(), k)
     {
-        const auto iter = local.cfind(body.constrainedPoints()[k]);
+        const auto iter = local.cfind(body.symmetry().points()[k]);
         if (iter.found())
         {
             side.project[*iter] = proj[k];

@@ -340,8 +340,8 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
         dict_.subOrEmptyDict("scheme"), material_()
     );
     createBoundaryConditions();
-    setConstraints();
-    setPlaneStrainPairs();
+    symmetry_.reset(new symmetryConstraint(dual_, bcs_));
+    planeStrain_.reset(new planeStrainTie(dual_, bcs_, dict_, name_));
     readState();
     if (material_->plastic())
     {
@@ -678,149 +678,6 @@ void Foam::solidBody::finishResiduals()
 }
 
 
-void Foam::solidBody::setConstraints()
-{
-    // Projector per point, I - sum e e over the orthonormalised normals of
-    // its constraining patches (a point on two planes keeps their common
-    // line).  Normals are summed over processors: a point on a processor
-    // boundary must be constrained alike on every processor holding it
-    List<tensor> P(mesh_.nPoints(), I);
-    boolList constrained(mesh_.nPoints(), false);
-    for (const solidBoundaryCondition& bc : bcs_)
-    {
-        if (!bc.constrainsNormal())
-        {
-            continue;
-        }
-        const vectorField N(dual_.patchPointNormals(bc.patchi()));
-        forAll(N, i)
-        {
-            if (magSqr(N[i]) > 0)
-            {
-                constrained[i] = true;
-                vector e(P[i] & N[i]);
-                if (mag(e) > 1e-6)
-                {
-                    e /= mag(e);
-                    P[i] -= e*e;
-                }
-            }
-        }
-    }
-
-    constrainedPoints_ = findIndices(constrained, true);
-    constraintProjections_ = UIndirectList<tensor>(P, constrainedPoints_)();
-}
-
-
-void Foam::solidBody::setPlaneStrainPairs()
-{
-    // A one-layer mesh between two symmetry planes carries plane strain
-    // only if both copies of each in-plane point move alike.  Left alone
-    // they need not: front and back copies moving apart in the plane is a
-    // mode of the slab that the symmetry planes allow, and the crushed
-    // contact corners of B2 on its second mesh drove it to +-23 m/s.  The
-    // pairs are the mesh edges normal to the planes; both ends of such an
-    // edge belong to one cell, hence to the same processor.
-    wordList patchNames;
-    if (!dict_.readIfPresent("planeStrain", patchNames))
-    {
-        return;
-    }
-
-    // Normals of the points on the planes (zero elsewhere)
-    vectorField N(mesh_.nPoints(), Zero);
-    for (const word& patchName : patchNames)
-    {
-        const label patchi = mesh_.boundaryMesh().findPatchID(patchName);
-        const solidBoundaryCondition* bcPtr = nullptr;
-        for (const solidBoundaryCondition& bc : bcs_)
-        {
-            if (bc.patchi() == patchi) bcPtr = &bc;
-        }
-        if (!bcPtr || !bcPtr->constrainsNormal())
-        {
-            FatalIOErrorInFunction(dict_)
-                << "planeStrain: '" << patchName << "' is not a symmetry"
-                << " (or empty) patch of body '" << name_ << "'" << nl
-                << "It lists the patches holding the two planes of the"
-                << " one-layer mesh, e.g. planeStrain (frontBack);"
-                << exit(FatalIOError);
-        }
-        N += dual_.patchPointNormals(patchi);
-    }
-
-    const pointField& X = mesh_.points();
-    const labelList& start = dual_.edgeStart();
-    const labelList& end = dual_.edgeEnd();
-
-    labelList partner(mesh_.nPoints(), -1);
-    label nBad = 0;
-    forAll(start, e)
-    {
-        const label i = start[e], j = end[e];
-        if (magSqr(N[i]) == 0 || magSqr(N[j]) == 0)
-        {
-            continue;
-        }
-        const vector d(X[j] - X[i]);
-        const vector n(N[i]/mag(N[i]));
-        if (mag(d ^ n) < 1e-6*mag(d))
-        {
-            if (partner[i] != -1 || partner[j] != -1) ++nBad;
-            partner[i] = j;
-            partner[j] = i;
-        }
-    }
-    forAll(partner, i)
-    {
-        if (partner[i] == -1) ++nBad;
-    }
-    if (returnReduce(nBad, sumOp<label>()))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "planeStrain: the mesh of body '" << name_ << "' is not one"
-            << " layer between the planes of " << flatOutput(patchNames)
-            << ": "
-            << returnReduce(nBad, sumOp<label>()) << " points lack a single"
-            << " partner across the layer" << nl
-            << "Mesh a plane-strain body as one extruded layer (gmsh"
-            << " Extrude ... Layers{1})"
-            << exit(FatalIOError);
-    }
-
-    forAll(partner, i)
-    {
-        if (i < partner[i])
-        {
-            planeStrainA_.append(i);
-            planeStrainB_.append(partner[i]);
-        }
-    }
-}
-
-
-void Foam::solidBody::tiePlaneStrainPairs()
-{
-    // Velocity (momentum) and position are tied: the volume-weighted mean
-    // conserves momentum and cannot add kinetic energy.  F is not: the
-    // copies' F are mirror images, not equal (the dual faces of in-plane
-    // edges tilt across the layer, so the out-of-plane shears of F have
-    // opposite signs at the boundary points), and with equal velocities
-    // their fluxes keep them mirror images.  Averaging F as well (zeroing
-    // those shears) was tried: it changed the ring's energy history and
-    // gave a dip of 0.35 % of E0 in its numerical dissipation.
-    const scalarField& V = dual_.volumes();
-    forAll(planeStrainA_, k)
-    {
-        const label i = planeStrainA_[k], j = planeStrainB_[k];
-        const scalar wi = V[i]/(V[i] + V[j]), wj = 1 - wi;
-        lm_[i] = lm_[j] = wi*lm_[i] + wj*lm_[j];
-        u_[i] = u_[j] = wi*u_[i] + wj*u_[j];
-    }
-}
-
-
 void Foam::solidBody::rkStage(const scalar dt, const scalar a)
 {
     const scalarField& V = dual_.volumes();
@@ -868,15 +725,11 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
 
 void Foam::solidBody::applyConstraints()
 {
-    // Symmetry planes: no normal velocity or displacement
-    forAll(constrainedPoints_, k)
+    symmetry_->apply(lm_, u_);
+    if (planeStrain_->size())
     {
-        const label i = constrainedPoints_[k];
-        lm_[i] = constraintProjections_[k] & lm_[i];
-        u_[i] = constraintProjections_[k] & u_[i];
+        planeStrain_->apply(dual_.volumes(), lm_, u_);
     }
-
-    tiePlaneStrainPairs();
 }
 
 
@@ -1063,10 +916,10 @@ void Foam::solidBody::describe(Ostream& os) const
     os  << ", Riemann solver ";
     riemann_->describe(os);
     os  << nl;
-    if (planeStrainA_.size())
+    if (returnReduce(planeStrain_->size(), sumOp<label>()))
     {
         os  << "    plane strain: both copies of "
-            << returnReduce(planeStrainA_.size(), sumOp<label>())
+            << returnReduce(planeStrain_->size(), sumOp<label>())
             << " in-plane points move alike" << nl;
     }
     for (const solidBoundaryCondition& bc : bcs_)

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Post-processing of a bar-impact tutorial (run in the case directory).
+"""Post-processing of a bar-impact tutorial (run in the case directory):
+    python3 -m svmbPost.barImpact      (the shell function barImpactPost)
 
 Reads the case from its dictionaries and meshes (materials, both initial
 velocities, bar lengths and gap, Hugoniot slope), the probe and energy
@@ -30,7 +31,6 @@ import numpy as np
 project = os.environ['SVMB_PROJECT']
 sys.path.insert(0, os.path.join(project, 'applications', 'utilities',
                                 'barImpactExact'))
-sys.path.insert(0, os.path.join(project, 'etc'))
 import barImpactExact  # noqa: E402
 import svmbPost  # noqa: E402
 

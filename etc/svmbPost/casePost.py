@@ -2,8 +2,10 @@
 """Post-processing shared by the multi-dimensional tutorials (doc/benchmarks.md,
 parts B and C).  Run in a case directory after solidVertexMBFoam:
 
-    svmbCasePost.py [--plane x|y|z] [--taylor-bar] [--contact-times]
+    python3 -m svmbPost.casePost [--plane x|y|z] [--contact-times]
                     [--contact-patch name] [--plane-strain x|y|z]
+    (the shell function svmbCasePost of etc/functions; a case adds its own
+    figures to results/summary.json afterwards, as the Taylor bar does)
 
 Reads every body's postProcessing/<body>/{energy,probes}.csv, the written
 time directories (ASCII point fields) and their uniform/ files, and writes
@@ -29,10 +31,6 @@ Pressure smoothness at each written time and body:
                  extrema, a smooth field almost none
 Numerical dissipation D = E0 + W_ext - (K + U + D_plastic): its smallest
 value and its largest decrease, both relative to the initial energy.
---taylor-bar: final radius and length of the bar (probe 0 at the edge of
-the impact face, probe 2 at the top centre) against doc/benchmarks.md, and the
-range of the final radii of all points on the edge of the impact face
-(roundness of the foot).
 --plane-strain: planeStrainMismatch, the largest velocity difference
 between the two copies of an in-plane point of a one-layer mesh (across
 the given direction) over the largest speed, at any written time: zero for
@@ -48,8 +46,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import svmbPost  # noqa: E402
+import svmbPost
 
 
 def bodies():
@@ -178,7 +175,6 @@ def main():
     ap.add_argument('--plane', choices=['x', 'y', 'z'], default=None)
     ap.add_argument('--at', type=float, default=0.0,
                     help='coordinate of the --plane section')
-    ap.add_argument('--taylor-bar', action='store_true')
     ap.add_argument('--contact-times', action='store_true')
     ap.add_argument('--plane-strain', choices=['x', 'y', 'z'], default=None)
     ap.add_argument('--contact-patch', default=None,
@@ -361,29 +357,6 @@ def main():
         summary[k] = stats[k]
     if 'maxInterpenetration' in stats:
         summary['maxInterpenetration'] = stats['maxInterpenetration']
-
-    if args.taylor_bar:
-        pr = svmbPost.read_csv('postProcessing/region0/probes.csv')
-        R = 3.2e-3  # bar radius (doc/benchmarks.md)
-        r = np.hypot(R + pr['ux0'][-1], pr['uz0'][-1])  # probe 0 at (R 0 0)
-        summary['finalRadius_mm'] = float(1e3*r)
-        summary['finalLength_mm'] = float(1e3*(32.4e-3 + pr['uy2'][-1]))
-        # Roundness of the foot: radii of all points initially on the edge
-        # of the impact face (a mesh imprint shows as a spread)
-        X = svmbPost.read_points(mesh_dir('region0') + '/points')
-        edge = (np.abs(X[:, 1]) < 1e-9) \
-            & (np.hypot(X[:, 0], X[:, 2]) > (1 - 1e-6)*R)
-        last = written_times()[-1]
-        u = svmbPost.read_point_field(field_path(last, 'region0', 'u'))
-        x = X[edge] + u[edge]
-        radii = 1e3*np.hypot(x[:, 0], x[:, 2])
-        summary['finalRadiusRange_mm'] = [float(radii.min()),
-                                          float(radii.max())]
-        summary['radiusTarget_mm'] = [7.0, 7.15]
-        summary['radiusReference_mm'] = {
-            'vertex-centred first-order FV (25519 points)': 7.06,
-            'average nodal pressure FEM (tet)': 6.99,
-            'standard FEM (hex)': 6.95, 'standard FEM (tet)': 5.55}
 
     # Momentum of all bodies together (conserved without walls and gravity)
     P = sum(np.column_stack([d['px'], d['py'], d['pz']])[:n] for d in data)

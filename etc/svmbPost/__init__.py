@@ -1,9 +1,16 @@
-"""Post-processing helpers shared by tutorials and tests (one place):
+"""The project's post-processing package (one place for all tutorials and
+tests; put $SVMB_PROJECT/etc on PYTHONPATH, as etc/bashrc does):
+    svmbPost             readers and run figures (this module)
+    svmbPost.casePost    results/ of the multi-dimensional tutorials
+    svmbPost.barImpact   results/ of the bar-impact tutorials (exact solution)
+Case-specific figures live with the case (tutorials/taylorBar/taylorBarPost.py).
+
+Helpers:
 reading OpenFOAM point fields and mesh points (ASCII or binary), the
 solver's CSV monitors, and the figures it writes with every complete time
 directory (<time>/uniform/runStatistics, contactState.<pair>).  Figures come
 from these files, never from the wording of the log.
-Import with  sys.path.insert(0, os.environ['SVMB_PROJECT'] + '/etc')."""
+"""
 import os
 import re
 import sys

@@ -597,13 +597,14 @@ Foam::contactPair::contactPair
 
     checkFacing();
     matchSides();
-    if (!timeDirectory::isRestart(time()))
+    const bool restart = timeDirectory::isRestart(time());
+    if (!restart)
     {
         checkOverlap();
     }
 
     // A restart carries the history of the earlier runs on
-    if (timeDirectory::isRestart(time()))
+    if (restart)
     {
         const autoPtr<IOdictionary> state
         (

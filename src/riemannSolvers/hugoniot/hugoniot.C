@@ -37,22 +37,11 @@ void Foam::contactRiemannSolvers::hugoniot::normalState
 
     const scalar mL = L.Lambda*L.rho, mR = R.Lambda*R.rho;
     const scalar ZL = L.rho*L.c, ZR = R.rho*R.c;
-    scalar a, b, c0;
-    if (L.s == R.s)
-    {
-        // (one slope: the factored form)
-        const scalar s = L.s;
-        a = s*(mR - mL);
-        b = ZL + ZR - 2*s*(mR*R.vn - mL*L.vn);
-        c0 = -(R.tn - L.tn + ZL*L.vn + ZR*R.vn - s*(mR*sqr(R.vn) - mL*sqr(L.vn)));
-    }
-    else
-    {
-        const scalar sL = L.s*mL, sR = R.s*mR;
-        a = sR - sL;
-        b = ZL + ZR - 2*(sR*R.vn - sL*L.vn);
-        c0 = -(R.tn - L.tn + ZL*L.vn + ZR*R.vn - (sR*sqr(R.vn) - sL*sqr(L.vn)));
-    }
+    const scalar sL = L.s*mL, sR = R.s*mR;
+    const scalar a = sR - sL;
+    const scalar b = ZL + ZR - 2*(sR*R.vn - sL*L.vn);
+    const scalar c0 =
+        -(R.tn - L.tn + ZL*L.vn + ZR*R.vn - (sR*sqr(R.vn) - sL*sqr(L.vn)));
 
     if (mag(a) < 1e-12*mag(b))
     {

@@ -45,8 +45,10 @@ void Foam::solidBody::readScheme()
     // Off by default: its one blending factor per body lowers the order of
     // the whole body where one place produces energy, which costs the 1D
     // wall reflection 0.9 % of its plateau accuracy (doc/design.md)
-    energyStable_ =
-        secondOrder_ && scheme.getOrDefault<Switch>("energyStable", false);
+    if (secondOrder_ && scheme.getOrDefault<Switch>("energyStable", false))
+    {
+        energyStability_.reset(new energyStability(dual_, JLaw_));
+    }
 
     if (secondOrder_)
     {
@@ -189,7 +191,7 @@ void Foam::solidBody::createBoundaryConditions()
 void Foam::solidBody::readState()
 {
     const label nPts = mesh_.nPoints();
-    const bool restart = timeDirectory::isRestart(runTime_);
+    const bool restart = restart_;
 
     // A restart reads every field it needs (or stops naming the file).  A
     // fresh run reads the fields the user put in the start directory and
@@ -245,7 +247,7 @@ void Foam::solidBody::readState()
 
 void Foam::solidBody::readBookkeeping()
 {
-    if (timeDirectory::isRestart(runTime_))
+    if (restart_)
     {
         const autoPtr<IOdictionary> state
         (
@@ -281,6 +283,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
 :
     runTime_(runTime),
     name_(region),
+    restart_(timeDirectory::isRestart(runTime)),
     mesh_
     (
         IOobject
@@ -309,7 +312,6 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     secondOrder_(true),
     limiter_(),
     riemann_(),
-    energyStable_(false),
     nEnergyLimited_(0),
     minEnergyTheta_(1),
     bcs_(),
@@ -360,16 +362,11 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
         phi_.setSize(nPts);
         G_.setSize(nPts);
     }
-    if (energyStable_)
-    {
-        energyStability_.reset(new energyStability(dual_, JLaw_));
-    }
-
     if (!updateConstitutive())
     {
         FatalErrorInFunction
             << "Body " << name_ << ": the "
-            << (timeDirectory::isRestart(runTime_) ? "restart" : "initial")
+            << (restart_ ? "restart" : "initial")
             << " state at t = " << runTime_.timeName() << " is invalid: "
             << invalidQuantity_ << " = " << invalidValue_
             << " at the point at " << invalidPoint_ << exit(FatalError);
@@ -618,7 +615,7 @@ void Foam::solidBody::addInteriorFluxes()
 
     // Energy stability (energyStability.H): blend towards the first-order
     // interior residuals where the second-order ones produce energy
-    if (energyStable_)
+    if (energyStability_.valid())
     {
         const scalar theta = energyStability_->apply
         (
@@ -726,10 +723,7 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
 void Foam::solidBody::applyConstraints()
 {
     symmetry_->apply(lm_, u_);
-    if (planeStrain_->size())
-    {
-        planeStrain_->apply(dual_.volumes(), lm_, u_);
-    }
+    planeStrain_->apply(dual_.volumes(), lm_, u_);
 }
 
 

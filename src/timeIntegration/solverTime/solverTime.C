@@ -156,6 +156,7 @@ void Foam::solverTime::selectStartTime()
 
     // Newest complete time directory; the processors share the master's
     // list (a time missing on some processor is incomplete there)
+    const scalar t0 = controlDict().getOrDefault<scalar>("startTime", 0);
     instantList times(this->times());
     Pstream::scatter(times);
     for (label i = times.size() - 1; i >= 0; --i)
@@ -169,7 +170,6 @@ void Foam::solverTime::selectStartTime()
             restartFrom(times[i]);
             return;
         }
-        const scalar t0 = controlDict().getOrDefault<scalar>("startTime", 0);
         if (times[i].name() != timeName(t0))
         {
             WarningInFunction
@@ -182,7 +182,6 @@ void Foam::solverTime::selectStartTime()
     }
 
     // No complete time: a fresh run at startTime
-    const scalar t0 = controlDict().getOrDefault<scalar>("startTime", 0);
     setTime(t0, 0);
     startTime_ = t0;
     startTimeIndex_ = 0;

@@ -77,6 +77,7 @@ int main(int argc, char *argv[])
         for (const solidBody& b : bodies)
         {
             b.write();
+            timeDirectory::interruptIfRequested(runTime);
         }
         for (const contactPair& c : contacts)
         {

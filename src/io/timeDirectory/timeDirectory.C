@@ -10,6 +10,9 @@
 #include "IOdictionary.H"
 #include "Pstream.H"
 
+#include <csignal>
+#include <sstream>
+
 const Foam::word Foam::timeDirectory::markerName("time");
 const Foam::word Foam::timeDirectory::writingName(".writing");
 
@@ -29,6 +32,37 @@ void Foam::timeDirectory::beginWrite(const Time& runTime)
     {
         rm(marker);
     }
+}
+
+
+void Foam::timeDirectory::interruptIfRequested(const Time& runTime)
+{
+    const std::string request(getEnv("SVMB_INTERRUPT_WRITE"));
+    if (request.empty())
+    {
+        return;
+    }
+    // Plain text, not OpenFOAM tokens: a time name such as 0.1 would read
+    // as a number
+    std::istringstream is(request);
+    std::string name, sig;
+    is >> name >> sig;
+    if (name != runTime.timeName())
+    {
+        return;
+    }
+    const int number =
+        sig == "TERM" ? SIGTERM
+      : sig == "INT" ? SIGINT
+      : sig == "KILL" ? SIGKILL
+      : 0;
+    if (!number)
+    {
+        FatalErrorInFunction
+            << "SVMB_INTERRUPT_WRITE=\"" << request.c_str() << "\": the "
+            << "signal must be TERM, INT or KILL" << exit(FatalError);
+    }
+    std::raise(number);
 }
 
 

@@ -16,7 +16,8 @@ Description
     contact pairs between bodies by constant/contactProperties (see
     contactPair.H).
     system/controlDict: see solverTime.H (endTime, writeControl,
-    writeInterval, cfl: time step = cfl h_min / U_max).
+    writeInterval, cfl: time step = cfl times the stable step of the
+    current state, stableTimeStep.H).
 
     Restart: a run starts from the newest complete time directory
     (startFrom latestTime) and reads every field it needs from it; each

@@ -280,29 +280,6 @@ void Foam::dualMesh::synchronise()
 }
 
 
-void Foam::dualMesh::calcStabilityLengths()
-{
-    scalarField faces(volume_.size(), 0.0);
-    forAll(edgeMagSf_, e)
-    {
-        faces[edgeStart_[e]] += edgeMagSf_[e];
-        faces[edgeEnd_[e]] += edgeMagSf_[e];
-    }
-    for (const patchSubFaces& sf : patchSubFaces_)
-    {
-        forAll(sf.point, s)
-        {
-            faces[sf.point[s]] += 2*mag(sf.area[s]);
-        }
-    }
-    if (Pstream::parRun())
-    {
-        syncTools::syncPointList(mesh_, faces, plusEqOp<scalar>(), 0.0);
-    }
-    stabilityLength_ = 6*volume_/max(faces, VSMALL);
-}
-
-
 void Foam::dualMesh::calcPointEdges()
 {
     const label nPts = volume_.size();
@@ -365,7 +342,6 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     calcBoundarySubFaces();
     synchronise();
     calcPointEdges();
-    calcStabilityLengths();
 
     forAll(volume_, i)
     {
@@ -388,12 +364,6 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
 Foam::scalar Foam::dualMesh::minLength() const
 {
     return gMin(length_);
-}
-
-
-Foam::scalar Foam::dualMesh::minStabilityLength() const
-{
-    return gMin(stabilityLength_);
 }
 
 

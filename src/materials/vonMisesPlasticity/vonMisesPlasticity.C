@@ -89,7 +89,11 @@ Foam::materialModels::vonMisesPlasticity::vonMisesPlasticity
     yieldStress_(readPositive(dict, "yieldStress")),
     hardening_(readPositive(dict, "hardening", true)),
     CpInv_(nPoints, symmTensor::I),
-    epsP_(nPoints, 0.0)
+    epsP_(nPoints, 0.0),
+    returnedCpInv_(nPoints, symmTensor::I),
+    returnedEpsP_(nPoints, 0.0),
+    returnedDissipation_(nPoints, 0.0),
+    returnedEnergy_(nPoints, 0.0)
 {
     if (mu_ <= 0)
     {
@@ -139,6 +143,28 @@ void Foam::materialModels::vonMisesPlasticity::stress
             (tauDevTensor & inv(F[i]).T())
           + (Jp/J[i] + couplingPressure(detF, J[i]))*H[i];
         SigmaJ[i] = Jp/J[i] + couplingSigmaJ(detF, J[i]);
+
+        // The returned state, for updateState() and energy()
+        const scalar lnJ3 = log(J[i])/3.0;
+        returnedEnergy_[i] =
+            mu_*(sqr(lnLam[0] - lnJ3) + sqr(lnLam[1] - lnJ3)
+               + sqr(lnLam[2] - lnJ3))
+          + volumetricEnergyHencky(J[i])
+          + couplingEnergy(detF, J[i]);
+        returnedEpsP_[i] = epsP_[i] + dgamma;
+        returnedDissipation_[i] = 0;
+        if (dgamma > 0)
+        {
+            symmTensor be(Zero);
+            for (direction a = 0; a < 3; ++a)
+            {
+                const vector n(dirs.row(a));
+                be += exp(2*lnLam[a])*sqr(n);
+            }
+            const tensor FbarInv(inv(Fbar));
+            returnedCpInv_[i] = symm(FbarInv & be & FbarInv.T());
+            returnedDissipation_[i] = dgamma*sqrt(1.5)*mag(tauDev);
+        }
     }
 }
 
@@ -172,6 +198,21 @@ void Foam::materialModels::vonMisesPlasticity::energy
 }
 
 
+bool Foam::materialModels::vonMisesPlasticity::energyOfLastStress
+(
+    UList<scalar>& W
+) const
+{
+    // The returned energy is also the energy of the state once
+    // updateState() committed it
+    forAll(W, i)
+    {
+        W[i] = returnedEnergy_[i];
+    }
+    return true;
+}
+
+
 void Foam::materialModels::vonMisesPlasticity::updateState
 (
     const UList<tensor>& F,
@@ -179,31 +220,17 @@ void Foam::materialModels::vonMisesPlasticity::updateState
     UList<scalar>& dD
 )
 {
-    vector lnLam, tauDev;
-    tensor dirs, Fbar;
-    scalar dgamma, Jp;
-
+    // Commit the returned state of the final stress evaluation (of this
+    // F): the stress of the state is unchanged by it, since its trial
+    // state is now the returned one
     forAll(F, i)
     {
-        returnMap
-        (
-            F[i], J[i], CpInv_[i], epsP_[i],
-            lnLam, dirs, tauDev, dgamma, Jp, Fbar
-        );
-
         dD[i] = 0;
-        if (dgamma > 0)
+        if (returnedEpsP_[i] > epsP_[i])
         {
-            symmTensor be(Zero);
-            for (direction a = 0; a < 3; ++a)
-            {
-                const vector n(dirs.row(a));
-                be += exp(2*lnLam[a])*sqr(n);
-            }
-            const tensor FbarInv(inv(Fbar));
-            CpInv_[i] = symm(FbarInv & be & FbarInv.T());
-            epsP_[i] += dgamma;
-            dD[i] = dgamma*sqrt(1.5)*mag(tauDev);
+            CpInv_[i] = returnedCpInv_[i];
+            epsP_[i] = returnedEpsP_[i];
+            dD[i] = returnedDissipation_[i];
         }
     }
 }

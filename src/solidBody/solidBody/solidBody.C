@@ -344,6 +344,10 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     createBoundaryConditions();
     symmetry_.reset(new symmetryConstraint(dual_, bcs_));
     planeStrain_.reset(new planeStrainTie(dual_, bcs_, dict_, name_));
+    stableStep_.reset
+    (
+        new stableTimeStep(dual_, material_(), bcs_, JLaw_)
+    );
     readState();
     if (material_->plastic())
     {
@@ -737,60 +741,33 @@ void Foam::solidBody::endStep()
             dDplastic_[i] *= dual_.volumes()[i];
         }
         Dplastic_ += dual_.sumPoints(dDplastic_);
-        updateConstitutive();
+        // The stress of the accepted state is unchanged: it was evaluated
+        // with the returned state that updateState() just committed
     }
 }
 
 
-Foam::scalar Foam::solidBody::maxWaveSpeed() const
+Foam::scalar Foam::solidBody::stableDeltaT() const
 {
-    scalar U = material_->cp();
+    scalar vMax = 0;
     if (material_->hugoniot())
     {
-        // Shock speed c + s |v|, and the tangent (characteristic) speed of
-        // the most compressed point, which the shock speed does not bound
-        // once the body has slowed down
-        scalar vMax = 0;
         forAll(v_, i)
         {
-            vMax = max(vMax, mag(v_[i]));
+            vMax = max(vMax, magSqr(v_[i]));
         }
-        const List<scalar>& J = Jc();
-        scalar Jmin = 1;
-        forAll(J, i)
-        {
-            Jmin = min(Jmin, J[i]);
-        }
-        reduce(vMax, maxOp<scalar>());
-        reduce(Jmin, minOp<scalar>());
-        U = max
-        (
-            U + material_->hugoniotS()*vMax,
-            material_->tangentWaveSpeed(Jmin)
-        );
+        vMax = Foam::sqrt(returnReduce(vMax, maxOp<scalar>()));
     }
-    return U;
+    return returnReduce
+    (
+        stableStep_->deltaT(F_, Hc(), Jc(), vMax), minOp<scalar>()
+    );
 }
 
 
-Foam::scalar Foam::solidBody::minLength() const
+Foam::scalar Foam::solidBody::referenceDeltaT() const
 {
-    const labelList& start = dual_.edgeStart();
-    const labelList& end = dual_.edgeEnd();
-    const pointField& X = mesh_.points();
-    const scalarField& h = dual_.stabilityLengths();
-    scalar hMin2 = sqr(dual_.minStabilityLength());
-    forAll(start, e)
-    {
-        const label i = start[e], j = end[e];
-        const scalar stretch2 =
-            magSqr(x_[j] - x_[i])/magSqr(X[j] - X[i]);
-        if (stretch2 < 1)
-        {
-            hMin2 = min(hMin2, stretch2*sqr(min(h[i], h[j])));
-        }
-    }
-    return Foam::sqrt(returnReduce(hMin2, minOp<scalar>()));
+    return returnReduce(stableStep_->referenceDeltaT(), minOp<scalar>());
 }
 
 
@@ -810,7 +787,12 @@ Foam::scalar Foam::solidBody::kineticEnergy() const
 Foam::scalar Foam::solidBody::strainEnergy() const
 {
     scalarField W(F_.size());
-    material_->energy(F_, Hc(), Jc(), W);
+    // Every change of F_ is followed by a stress evaluation
+    // (updateConstitutive): a model that kept its energy gives it
+    if (!material_->energyOfLastStress(W))
+    {
+        material_->energy(F_, Hc(), Jc(), W);
+    }
     W *= dual_.volumes();
     return dual_.sumPoints(W);
 }

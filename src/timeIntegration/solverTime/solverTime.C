@@ -100,12 +100,12 @@ const Foam::word& Foam::solverTime::checkControlDict(const argList& args)
             << exit(FatalIOError);
     }
 
-    const scalar cfl = getFiniteOrDefault<scalar>(dict, "cfl", 0.3);
-    if (!(cfl > 0) || cfl > 1)
+    const scalar cfl = getFiniteOrDefault<scalar>(dict, "cfl", 0.9);
+    if (!(cfl > 0) || cfl > 2)
     {
         FatalIOErrorInFunction(dict)
             << "Keyword 'cfl' = " << cfl << " in " << file
-            << " must be in (0, 1]" << exit(FatalIOError);
+            << " must be in (0, 2]" << exit(FatalIOError);
     }
 
     return controlDictName;
@@ -228,7 +228,7 @@ Foam::solverTime::solverTime(const argList& args)
 :
     Time(checkControlDict(args), args),
     restart_(false),
-    cfl_(controlDict().getOrDefault<scalar>("cfl", 0.3))
+    cfl_(controlDict().getOrDefault<scalar>("cfl", 0.9))
 {
     selectStartTime();
 

@@ -12,13 +12,11 @@ Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
     const scalar cfl
 )
 {
-    scalar hMin = GREAT, UMax = 0;
+    scalar dtStable = GREAT;
     for (const solidBody& b : bodies)
     {
-        hMin = min(hMin, b.minLength());
-        UMax = max(UMax, b.maxWaveSpeed());
+        dtStable = min(dtStable, cfl*b.stableDeltaT());
     }
-    const scalar dtStable = cfl*hMin/UMax;
     scalar dt = dtStable;
     for (const contactPair& c : contacts)
     {

@@ -1,0 +1,215 @@
+/*---------------------------------------------------------------------------*\
+  solidVertexMBFoam: explicit vertex-centred finite volumes for large-strain
+  solid contact dynamics.  License: GPL-3.0-or-later (see LICENSE).
+\*---------------------------------------------------------------------------*/
+
+#include "stableTimeStep.H"
+#include "dualMesh.H"
+#include "materialModel.H"
+#include "solidBoundaryCondition.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::stableTimeStep::stableTimeStep
+(
+    const dualMesh& dual,
+    const materialModel& material,
+    const PtrList<solidBoundaryCondition>& bcs,
+    const bool JLaw
+)
+:
+    material_(material),
+    dtRef_(),
+    rMomentum_(),
+    rJ_(),
+    M_(),
+    dtRefMin_(GREAT)
+{
+    const label nPts = dual.nPoints();
+
+    // S_i (all faces that carry a mode), T_i (their normal parts), the
+    // interior faces for the J stabilisation, and the face-area weighted
+    // orientation of all faces for M_i
+    scalarField S(nPts, 0.0);
+    scalarField Sint(nPts, 0.0);
+    symmTensorField T(nPts, Zero);
+    scalarField Sall(nPts, 0.0);
+    symmTensorField Tall(nPts, Zero);
+
+    const labelList& start = dual.edgeStart();
+    const labelList& end = dual.edgeEnd();
+    const scalarField& magSf = dual.edgeMagSf();
+    const vectorField& n = dual.edgeNormals();
+    forAll(start, e)
+    {
+        const label i = start[e], j = end[e];
+        const symmTensor nn(magSf[e]*sqr(n[e]));
+        Sall[i] += magSf[e];
+        Sall[j] += magSf[e];
+        Tall[i] += nn;
+        Tall[j] += nn;
+        Sint[i] += magSf[e];
+        Sint[j] += magSf[e];
+        S[i] += magSf[e];
+        S[j] += magSf[e];
+        T[i] += nn;
+        T[j] += nn;
+    }
+
+    boolList normalConstrained(dual.mesh().boundaryMesh().size(), false);
+    for (const solidBoundaryCondition& bc : bcs)
+    {
+        normalConstrained[bc.patchi()] = bc.constrainsNormal();
+    }
+    forAll(normalConstrained, patchi)
+    {
+        const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
+        forAll(sf.point, s)
+        {
+            const label i = sf.point[s];
+            const scalar magA = mag(sf.area[s]);
+            if (magA < VSMALL)
+            {
+                continue;
+            }
+            const symmTensor nn(sqr(sf.area[s])/magA);
+            Sall[i] += magA;
+            Tall[i] += nn;
+            S[i] += magA;
+            if (!normalConstrained[patchi])
+            {
+                T[i] += nn;
+            }
+        }
+    }
+
+    if (Pstream::parRun())
+    {
+        const polyMesh& mesh = dual.mesh();
+        syncTools::syncPointList(mesh, S, plusEqOp<scalar>(), 0.0);
+        syncTools::syncPointList(mesh, Sall, plusEqOp<scalar>(), 0.0);
+        syncTools::syncPointList(mesh, Sint, plusEqOp<scalar>(), 0.0);
+        syncTools::syncPointList
+        (
+            mesh, T, plusEqOp<symmTensor>(), symmTensor(Zero)
+        );
+        syncTools::syncPointList
+        (
+            mesh, Tall, plusEqOp<symmTensor>(), symmTensor(Zero)
+        );
+    }
+
+    const scalar cp = material.cp();
+    const scalar cs = material.cs();
+    const scalarField& V = dual.volumes();
+
+    // Momentum: r = [c_s S + (c_p - c_s) lambda_max(T)]/V
+    rMomentum_.setSize(nPts);
+    forAll(rMomentum_, i)
+    {
+        rMomentum_[i] =
+            (cs*S[i] + (cp - cs)*cmptMax(eigenValues(T[i])))/V[i];
+    }
+
+    // J stabilisation: Omega dJ/dt gains sum_j S_ij (Sigma_J,j - Sigma_J,i)
+    // with S_ij = |C|/(2 rho c_p) (undeformed) and dSigma_J/dJ = k = kappa
+    // + mu (the volumetric stiffness and the det F - J tie): a
+    // checkerboard of J decays at r = k S_int/(rho c_p V).  A small-strain
+    // material takes its pressure from tr F, not from J: J is then carried
+    // along without acting back, and sets no limit
+    if (JLaw && !material.smallStrain())
+    {
+        rJ_.setSize(nPts);
+        const scalar k = material.kappa() + material.mu();
+        forAll(rJ_, i)
+        {
+            rJ_[i] = k*Sint[i]/(material.rho()*cp*V[i]);
+        }
+    }
+
+    dtRef_.setSize(nPts);
+    forAll(dtRef_, i)
+    {
+        const scalar r = max(rMomentum_[i], rJ_.empty() ? 0 : rJ_[i]);
+        dtRef_[i] = 2/max(r, VSMALL);
+        dtRefMin_ = min(dtRefMin_, dtRef_[i]);
+    }
+
+    if (!material.smallStrain())
+    {
+        M_.setSize(nPts);
+        forAll(M_, i)
+        {
+            M_[i] = Tall[i]/max(Sall[i], VSMALL);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::stableTimeStep::deltaT
+(
+    const UList<tensor>& F,
+    const UList<tensor>& H,
+    const UList<scalar>& J,
+    const scalar vMax
+) const
+{
+    const bool hugoniot = material_.hugoniot();
+    if (M_.empty() && !hugoniot)
+    {
+        // Small strain without a Hugoniot pressure: constant stiffness
+        return dtRefMin_;
+    }
+
+    const scalar cp = material_.cp();
+    const scalar shockFactor =
+        hugoniot ? 1 + material_.hugoniotS()*vMax/cp : 1;
+
+    const scalar kRef = material_.kappa() + material_.mu();
+    const scalar rhoCp2 = material_.rho()*sqr(cp);
+    scalar dt = GREAT;
+    forAll(dtRef_, i)
+    {
+        // Wave speed of the state relative to c_p
+        scalar c = shockFactor;
+        if (J[i] < 1)
+        {
+            c = max(c, material_.tangentWaveSpeed(J[i])/cp);
+        }
+
+        // Face-area mean of |F^-T n|^2 = M : (F^-1 F^-T), with F^-T =
+        // H/det F: sum over the rows h_k of H of h_k . M . h_k/det(F)^2
+        scalar stretch2 = 1;
+        if (!M_.empty())
+        {
+            const tensor& h = H[i];
+            const symmTensor& m = M_[i];
+            const scalar detF2 = sqr((h && F[i])/3);
+            scalar s2 = 0;
+            for (direction k = 0; k < 3; ++k)
+            {
+                const vector hk(h(k, 0), h(k, 1), h(k, 2));
+                s2 += hk & (m & hk);
+            }
+            stretch2 = max(s2/max(detF2, VSMALL), 1.0);
+        }
+
+        // Momentum: the wave speed times the stretch of the faces; J
+        // stabilisation: S_ij grows as |H C|^2 (the square of the
+        // stretch), the stiffness k with the state's tangent
+        scalar r = rMomentum_[i]*c*sqrt(stretch2);
+        if (!rJ_.empty())
+        {
+            const scalar k = (sqr(c)*rhoCp2 - 4.0/3.0*material_.mu()
+              + material_.mu())/kRef;
+            r = max(r, rJ_[i]*max(k, 1.0)*sqr(J[i])*stretch2);
+        }
+        dt = min(dt, 2/max(r, VSMALL));
+    }
+    return dt;
+}
+
+
+// ************************************************************************* //

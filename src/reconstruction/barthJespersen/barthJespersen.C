@@ -65,27 +65,41 @@ void Foam::limiters::barthJespersen::limit
     List<fluxState>& phi
 ) const
 {
+    // Neighbourhood extrema (the point itself included)
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
-    const pointField& X = dual.mesh().points();
-    const label nPts = q.size();
-
-    // Neighbourhood extrema (the point itself included)
-    List<fluxState>& qMin = qMin_;
-    List<fluxState>& qMax = qMax_;
-    qMin = q;
-    qMax = q;
+    qMin_ = q;
+    qMax_ = q;
     forAll(es, e)
     {
         const label i = es[e], j = ee[e];
         for (direction c = 0; c < nFluxComponents; ++c)
         {
-            qMin[i][c] = min(qMin[i][c], q[j][c]);
-            qMax[i][c] = max(qMax[i][c], q[j][c]);
-            qMin[j][c] = min(qMin[j][c], q[i][c]);
-            qMax[j][c] = max(qMax[j][c], q[i][c]);
+            qMin_[i][c] = min(qMin_[i][c], q[j][c]);
+            qMax_[i][c] = max(qMax_[i][c], q[j][c]);
+            qMin_[j][c] = min(qMin_[j][c], q[i][c]);
+            qMax_[j][c] = max(qMax_[j][c], q[i][c]);
         }
     }
+    limit(dual, q, G, qMin_, qMax_, phi);
+}
+
+
+void Foam::limiters::barthJespersen::limit
+(
+    const dualMesh& dual,
+    const UList<fluxState>& q,
+    const UList<fluxStateGradient>& G,
+    List<fluxState>& qMin,
+    List<fluxState>& qMax,
+    List<fluxState>& phi
+) const
+{
+    const labelList& es = dual.edgeStart();
+    const labelList& ee = dual.edgeEnd();
+    const pointField& X = dual.mesh().points();
+    const label nPts = q.size();
+
     if (Pstream::parRun())
     {
         fluxState big; big = GREAT;

@@ -5,13 +5,23 @@
 
 #include "greenGauss.H"
 
-void Foam::greenGaussGradient
+namespace
+{
+
+// One pass over the edges: the Green-Gauss sums and, when Bounds, the
+// neighbourhood extrema (the limiter's pass over the same data)
+template<bool Bounds>
+void gradientAndBounds
 (
-    const dualMesh& dual,
-    const UList<fluxState>& q,
-    List<fluxStateGradient>& G
+    const Foam::dualMesh& dual,
+    const Foam::UList<Foam::fluxState>& q,
+    Foam::List<Foam::fluxStateGradient>& G,
+    Foam::List<Foam::fluxState>& qMin,
+    Foam::List<Foam::fluxState>& qMax
 )
 {
+    using namespace Foam;
+
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
     const vectorField& Ne = dual.edgeNormals();
@@ -22,6 +32,11 @@ void Foam::greenGaussGradient
     fluxStateGradient zero;
     zero = vector::zero;
     G = zero;
+    if (Bounds)
+    {
+        qMin = q;
+        qMax = q;
+    }
 
     forAll(es, e)
     {
@@ -36,6 +51,20 @@ void Foam::greenGaussGradient
             const vector flux((qi[c] + qj[c])*C);
             Gi[c] += flux;
             Gj[c] -= flux;
+        }
+        if (Bounds)
+        {
+            fluxState& mini = qMin[i];
+            fluxState& maxi = qMax[i];
+            fluxState& minj = qMin[j];
+            fluxState& maxj = qMax[j];
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                mini[c] = min(mini[c], qj[c]);
+                maxi[c] = max(maxi[c], qj[c]);
+                minj[c] = min(minj[c], qi[c]);
+                maxj[c] = max(maxj[c], qi[c]);
+            }
         }
     }
 
@@ -74,6 +103,33 @@ void Foam::greenGaussGradient
             G[i][c] *= invV;
         }
     }
+}
+
+} // End anonymous namespace
+
+
+void Foam::greenGaussGradient
+(
+    const dualMesh& dual,
+    const UList<fluxState>& q,
+    List<fluxStateGradient>& G
+)
+{
+    List<fluxState> unused;
+    gradientAndBounds<false>(dual, q, G, unused, unused);
+}
+
+
+void Foam::greenGaussGradient
+(
+    const dualMesh& dual,
+    const UList<fluxState>& q,
+    List<fluxStateGradient>& G,
+    List<fluxState>& qMin,
+    List<fluxState>& qMax
+)
+{
+    gradientAndBounds<true>(dual, q, G, qMin, qMax);
 }
 
 

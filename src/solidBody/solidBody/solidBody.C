@@ -365,6 +365,11 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
         q_.setSize(nPts);
         phi_.setSize(nPts);
         G_.setSize(nPts);
+        if (limiter_->usesBounds())
+        {
+            qMin_.setSize(nPts);
+            qMax_.setSize(nPts);
+        }
     }
     if (!updateConstitutive())
     {
@@ -540,8 +545,17 @@ void Foam::solidBody::addInteriorFluxes()
         {
             packFluxState(v_[i], P_[i], SigmaJ_[i], q_[i]);
         }
-        greenGaussGradient(dual_, q_, G_);
-        limiter_->limit(dual_, q_, G_, phi_);
+        if (limiter_->usesBounds())
+        {
+            // The neighbourhood extrema in the gradient's pass
+            greenGaussGradient(dual_, q_, G_, qMin_, qMax_);
+            limiter_->limit(dual_, q_, G_, qMin_, qMax_, phi_);
+        }
+        else
+        {
+            greenGaussGradient(dual_, q_, G_);
+            limiter_->limit(dual_, q_, G_, phi_);
+        }
     }
 
     // One edge's upwind fluxes from its two midpoint states, added to the

@@ -18,7 +18,9 @@ Foam::stableTimeStep::stableTimeStep
     const bool JLaw
 )
 :
+    dual_(dual),
     material_(material),
+    sJ_(),
     dtRef_(),
     rMomentum_(),
     rJ_(),
@@ -120,6 +122,7 @@ Foam::stableTimeStep::stableTimeStep
     if (JLaw && !material.smallStrain())
     {
         rJ_.setSize(nPts);
+        sJ_.setSize(nPts);
         const scalar k = material.kappa() + material.mu();
         forAll(rJ_, i)
         {
@@ -169,6 +172,35 @@ Foam::scalar Foam::stableTimeStep::deltaT
 
     const scalar kRef = material_.kappa() + material_.mu();
     const scalar rhoCp2 = material_.rho()*sqr(cp);
+    const scalarField& V = dual_.volumes();
+
+    // The J stabilisation's own coefficients, S_ij = |C| |H_ave n|^2/(2 Z)
+    // with H averaged over the edge's two points as in the flux
+    if (!rJ_.empty())
+    {
+        const labelList& start = dual_.edgeStart();
+        const labelList& end = dual_.edgeEnd();
+        const vectorField& n = dual_.edgeNormals();
+        const scalarField& magSf = dual_.edgeMagSf();
+        sJ_ = 0;
+        forAll(start, e)
+        {
+            const label i = start[e], j = end[e];
+            const vector hN(0.5*((H[i] & n[e]) + (H[j] & n[e])));
+            const scalar w = magSf[e]*magSqr(hN);
+            sJ_[i] += w;
+            sJ_[j] += w;
+        }
+        if (Pstream::parRun())
+        {
+            syncTools::syncPointList
+            (
+                dual_.mesh(), sJ_, plusEqOp<scalar>(), 0.0
+            );
+        }
+    }
+    const scalar JFactor = 1/(material_.rho()*cp);
+
     scalar dt = GREAT;
     forAll(dtRef_, i)
     {
@@ -197,14 +229,13 @@ Foam::scalar Foam::stableTimeStep::deltaT
         }
 
         // Momentum: the wave speed times the stretch of the faces; J
-        // stabilisation: S_ij grows as |H C|^2 (the square of the
-        // stretch), the stiffness k with the state's tangent
+        // stabilisation: k sum_j 2 S_ij/V with the state's tangent k
         scalar r = rMomentum_[i]*c*sqrt(stretch2);
         if (!rJ_.empty())
         {
             const scalar k = (sqr(c)*rhoCp2 - 4.0/3.0*material_.mu()
               + material_.mu())/kRef;
-            r = max(r, rJ_[i]*max(k, 1.0)*sqr(J[i])*stretch2);
+            r = max(r, max(k, 1.0)*kRef*JFactor*sJ_[i]/V[i]);
         }
         dt = min(dt, 2/max(r, VSMALL));
     }

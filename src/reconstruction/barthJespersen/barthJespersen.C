@@ -73,13 +73,10 @@ void Foam::limiters::barthJespersen::limit
     forAll(es, e)
     {
         const label i = es[e], j = ee[e];
-        for (direction c = 0; c < nFluxComponents; ++c)
-        {
-            qMin_[i][c] = min(qMin_[i][c], q[j][c]);
-            qMax_[i][c] = max(qMax_[i][c], q[j][c]);
-            qMin_[j][c] = min(qMin_[j][c], q[i][c]);
-            qMax_[j][c] = max(qMax_[j][c], q[i][c]);
-        }
+        fluxStateMinEqOp()(qMin_[i], q[j]);
+        fluxStateMaxEqOp()(qMax_[i], q[j]);
+        fluxStateMinEqOp()(qMin_[j], q[i]);
+        fluxStateMaxEqOp()(qMax_[j], q[i]);
     }
     limit(dual, q, G, qMin_, qMax_, phi);
 }

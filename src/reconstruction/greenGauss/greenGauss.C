@@ -54,17 +54,10 @@ void gradientAndBounds
         }
         if (Bounds)
         {
-            fluxState& mini = qMin[i];
-            fluxState& maxi = qMax[i];
-            fluxState& minj = qMin[j];
-            fluxState& maxj = qMax[j];
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                mini[c] = min(mini[c], qj[c]);
-                maxi[c] = max(maxi[c], qj[c]);
-                minj[c] = min(minj[c], qi[c]);
-                maxj[c] = max(maxj[c], qi[c]);
-            }
+            fluxStateMinEqOp()(qMin[i], qj);
+            fluxStateMaxEqOp()(qMax[i], qj);
+            fluxStateMinEqOp()(qMin[j], qi);
+            fluxStateMaxEqOp()(qMax[j], qi);
         }
     }
 

@@ -779,12 +779,6 @@ Foam::scalar Foam::solidBody::stableDeltaT() const
 }
 
 
-Foam::scalar Foam::solidBody::referenceDeltaT() const
-{
-    return returnReduce(stableStep_->referenceDeltaT(), minOp<scalar>());
-}
-
-
 Foam::scalar Foam::solidBody::kineticEnergy() const
 {
     const scalarField& V = dual_.volumes();

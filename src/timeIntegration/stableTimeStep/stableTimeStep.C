@@ -21,21 +21,18 @@ Foam::stableTimeStep::stableTimeStep
     dual_(dual),
     material_(material),
     sJ_(),
-    dtRef_(),
     rMomentum_(),
-    rJ_(),
     M_(),
     dtRefMin_(GREAT)
 {
     const label nPts = dual.nPoints();
 
-    // S_i (all faces that carry a mode), T_i (their normal parts), the
-    // interior faces for the J stabilisation, and the face-area weighted
-    // orientation of all faces for M_i
+    // S_i (all faces), T_i (their normal parts that carry a mode), the
+    // interior faces alone for the J stabilisation, and the normal parts of
+    // all faces for M_i = Tall_i/S_i
     scalarField S(nPts, 0.0);
     scalarField Sint(nPts, 0.0);
     symmTensorField T(nPts, Zero);
-    scalarField Sall(nPts, 0.0);
     symmTensorField Tall(nPts, Zero);
 
     const labelList& start = dual.edgeStart();
@@ -46,17 +43,14 @@ Foam::stableTimeStep::stableTimeStep
     {
         const label i = start[e], j = end[e];
         const symmTensor nn(magSf[e]*sqr(n[e]));
-        Sall[i] += magSf[e];
-        Sall[j] += magSf[e];
-        Tall[i] += nn;
-        Tall[j] += nn;
         Sint[i] += magSf[e];
         Sint[j] += magSf[e];
-        S[i] += magSf[e];
-        S[j] += magSf[e];
         T[i] += nn;
         T[j] += nn;
     }
+
+    S = Sint;
+    Tall = T;
 
     boolList normalConstrained(dual.mesh().boundaryMesh().size(), false);
     for (const solidBoundaryCondition& bc : bcs)
@@ -75,9 +69,8 @@ Foam::stableTimeStep::stableTimeStep
                 continue;
             }
             const symmTensor nn(sqr(sf.area[s])/magA);
-            Sall[i] += magA;
-            Tall[i] += nn;
             S[i] += magA;
+            Tall[i] += nn;
             if (!normalConstrained[patchi])
             {
                 T[i] += nn;
@@ -89,7 +82,6 @@ Foam::stableTimeStep::stableTimeStep
     {
         const polyMesh& mesh = dual.mesh();
         syncTools::syncPointList(mesh, S, plusEqOp<scalar>(), 0.0);
-        syncTools::syncPointList(mesh, Sall, plusEqOp<scalar>(), 0.0);
         syncTools::syncPointList(mesh, Sint, plusEqOp<scalar>(), 0.0);
         syncTools::syncPointList
         (
@@ -118,24 +110,21 @@ Foam::stableTimeStep::stableTimeStep
     // + mu (the volumetric stiffness and the det F - J tie): a
     // checkerboard of J decays at r = k S_int/(rho c_p V).  A small-strain
     // material takes its pressure from tr F, not from J: J is then carried
-    // along without acting back, and sets no limit
-    if (JLaw && !material.smallStrain())
+    // along without acting back, and sets no limit.  deltaT() evaluates the
+    // rate from the state's coefficients (sJ_); here only the undeformed
+    // step of a material whose step never changes is kept
+    const bool JRate = JLaw && !material.smallStrain();
+    if (JRate)
     {
-        rJ_.setSize(nPts);
         sJ_.setSize(nPts);
-        const scalar k = material.kappa() + material.mu();
-        forAll(rJ_, i)
-        {
-            rJ_[i] = k*Sint[i]/(material.rho()*cp*V[i]);
-        }
     }
-
-    dtRef_.setSize(nPts);
-    forAll(dtRef_, i)
+    const scalar k = material.kappa() + material.mu();
+    forAll(rMomentum_, i)
     {
-        const scalar r = max(rMomentum_[i], rJ_.empty() ? 0 : rJ_[i]);
-        dtRef_[i] = 2/max(r, VSMALL);
-        dtRefMin_ = min(dtRefMin_, dtRef_[i]);
+        const scalar rJ =
+            JRate ? k*Sint[i]/(material.rho()*cp*V[i]) : 0;
+        dtRefMin_ =
+            min(dtRefMin_, 2/max(max(rMomentum_[i], rJ), VSMALL));
     }
 
     if (!material.smallStrain())
@@ -143,7 +132,7 @@ Foam::stableTimeStep::stableTimeStep
         M_.setSize(nPts);
         forAll(M_, i)
         {
-            M_[i] = Tall[i]/max(Sall[i], VSMALL);
+            M_[i] = Tall[i]/max(S[i], VSMALL);
         }
     }
 }
@@ -176,7 +165,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
 
     // The J stabilisation's own coefficients, S_ij = |C| |H_ave n|^2/(2 Z)
     // with H averaged over the edge's two points as in the flux
-    if (!rJ_.empty())
+    if (!sJ_.empty())
     {
         const labelList& start = dual_.edgeStart();
         const labelList& end = dual_.edgeEnd();
@@ -202,7 +191,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
     const scalar JFactor = 1/(material_.rho()*cp);
 
     scalar dt = GREAT;
-    forAll(dtRef_, i)
+    forAll(rMomentum_, i)
     {
         // Wave speed of the state relative to c_p
         scalar c = shockFactor;
@@ -231,7 +220,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
         // Momentum: the wave speed times the stretch of the faces; J
         // stabilisation: k sum_j 2 S_ij/V with the state's tangent k
         scalar r = rMomentum_[i]*c*sqrt(stretch2);
-        if (!rJ_.empty())
+        if (!sJ_.empty())
         {
             const scalar k = (sqr(c)*rhoCp2 - 4.0/3.0*material_.mu()
               + material_.mu())/kRef;

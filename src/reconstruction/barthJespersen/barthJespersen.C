@@ -16,69 +16,15 @@ namespace limiters
 }
 
 
-namespace
-{
-
-// Limit one end: lower phi so that fi + phi d stays within [fmin, fmax],
-// d the unlimited increment towards the edge midpoint.  Increments below
-// 'noise' (a tiny fraction of the body-wide magnitude of the quantity) are
-// not limited: for components that are zero up to round-off (transverse
-// velocity of a 1D wave, say) the ratio would be noise over noise and the
-// limited scheme would amplify round-off.  The division is done only when
-// it lowers phi.
-inline void bjLimit
-(
-    const Foam::scalar d,
-    const Foam::scalar fi,
-    const Foam::scalar fmin,
-    const Foam::scalar fmax,
-    const Foam::scalar noise,
-    Foam::scalar& phi
-)
-{
-    if (d > noise)
-    {
-        const Foam::scalar room = fmax - fi;
-        if (phi*d > room)
-        {
-            phi = room/d;
-        }
-    }
-    else if (d < -noise)
-    {
-        const Foam::scalar room = fmin - fi;
-        if (phi*d < room)
-        {
-            phi = room/d;
-        }
-    }
-}
-
-} // End anonymous namespace
-
-
 void Foam::limiters::barthJespersen::limit
 (
     const dualMesh& dual,
     const UList<fluxState>& q,
-    const UList<fluxStateGradient>& G,
-    List<fluxState>& phi
+    List<fluxStateGradient>& G
 ) const
 {
-    // Neighbourhood extrema (the point itself included)
-    const labelList& es = dual.edgeStart();
-    const labelList& ee = dual.edgeEnd();
-    qMin_ = q;
-    qMax_ = q;
-    forAll(es, e)
-    {
-        const label i = es[e], j = ee[e];
-        fluxStateMinEqOp()(qMin_[i], q[j]);
-        fluxStateMaxEqOp()(qMax_[i], q[j]);
-        fluxStateMinEqOp()(qMin_[j], q[i]);
-        fluxStateMaxEqOp()(qMax_[j], q[i]);
-    }
-    limit(dual, q, G, qMin_, qMax_, phi);
+    // The point loop finds the extrema itself (serial)
+    limitPoints<false>(dual, q, G, qMin_, qMax_);
 }
 
 
@@ -86,18 +32,53 @@ void Foam::limiters::barthJespersen::limit
 (
     const dualMesh& dual,
     const UList<fluxState>& q,
-    const UList<fluxStateGradient>& G,
+    List<fluxStateGradient>& G,
     List<fluxState>& qMin,
-    List<fluxState>& qMax,
-    List<fluxState>& phi
+    List<fluxState>& qMax
+) const
+{
+    limitPoints<true>(dual, q, G, qMin, qMax);
+}
+
+
+template<bool GivenBounds>
+void Foam::limiters::barthJespersen::limitPoints
+(
+    const dualMesh& dual,
+    const UList<fluxState>& q,
+    List<fluxStateGradient>& G,
+    List<fluxState>& qMin,
+    List<fluxState>& qMax
 ) const
 {
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
+    const labelList& pointEdgeStart = dual.pointEdgeStart();
+    const labelList& pointEdges = dual.pointEdges();
     const pointField& X = dual.mesh().points();
     const label nPts = q.size();
+    const bool serial = !Pstream::parRun();
 
-    if (Pstream::parRun())
+    if (!GivenBounds && !serial)
+    {
+        // Extrema over the processor's edges, completed below
+        const labelList& es = dual.edgeStart();
+        const labelList& ee = dual.edgeEnd();
+        qMin = q;
+        qMax = q;
+        forAll(es, e)
+        {
+            const label i = es[e], j = ee[e];
+            fluxStateMinEqOp()(qMin[i], q[j]);
+            fluxStateMaxEqOp()(qMax[i], q[j]);
+            fluxStateMinEqOp()(qMin[j], q[i]);
+            fluxStateMaxEqOp()(qMax[j], q[i]);
+        }
+    }
+    // In serial without given extrema the point loop finds them itself
+    const bool ownBounds = !GivenBounds && serial;
+
+    if (!serial)
     {
         fluxState big; big = GREAT;
         fluxState small; small = -GREAT;
@@ -109,10 +90,15 @@ void Foam::limiters::barthJespersen::limit
         (
             dual.mesh(), qMax, fluxStateMaxEqOp(), small
         );
+        phi_.setSize(nPts);
     }
 
     // Body-wide magnitudes: velocity components share one, stress
-    // components (P and Sigma_J) another
+    // components (P and Sigma_J) another.  Increments below 'noise' (a tiny
+    // fraction of the magnitude of the quantity) are not limited: for
+    // components that are zero up to round-off (transverse velocity of a 1D
+    // wave, say) the ratio would be noise over noise and the limited scheme
+    // would amplify round-off.
     scalar vScale = 0, PScale = 0;
     forAll(q, i)
     {
@@ -133,36 +119,86 @@ void Foam::limiters::barthJespersen::limit
         noise[c] = relativeNoise_*(c < 3 ? vScale : PScale) + VSMALL;
     }
 
+    // Point by point: the largest and smallest unlimited increments
+    // G_i (X_j - X_i)/2 over the point's edges, then Phi = the room to the
+    // extrema over them (at most 1)
     for (label i = 0; i < nPts; ++i)
     {
-        phi[i] = 1.0;
-    }
+        fluxStateGradient& g = G[i];
+        const point& Xi = X[i];
+        const fluxState& qi = q[i];
+        fluxState dHi, dLo, lo(qi), hi(qi);
+        dHi = 0.0;
+        dLo = 0.0;
+        for (label k = pointEdgeStart[i]; k < pointEdgeStart[i + 1]; ++k)
+        {
+            const label e = pointEdges[k];
+            const label j = es[e] + ee[e] - i;
+            const vector halfdX(0.5*(X[j] - Xi));
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                const scalar d = g[c] & halfdX;
+                dHi[c] = max(dHi[c], d);
+                dLo[c] = min(dLo[c], d);
+            }
+            if (ownBounds)
+            {
+                const fluxState& qj = q[j];
+                for (direction c = 0; c < nFluxComponents; ++c)
+                {
+                    lo[c] = min(lo[c], qj[c]);
+                    hi[c] = max(hi[c], qj[c]);
+                }
+            }
+        }
+        if (!ownBounds)
+        {
+            lo = qMin[i];
+            hi = qMax[i];
+        }
 
-    forAll(es, e)
-    {
-        const label i = es[e], j = ee[e];
-        const vector halfdX(0.5*(X[j] - X[i]));
+        fluxState phi;
         for (direction c = 0; c < nFluxComponents; ++c)
         {
-            bjLimit
-            (
-                G[i][c] & halfdX, q[i][c], qMin[i][c], qMax[i][c],
-                noise[c], phi[i][c]
-            );
-            bjLimit
-            (
-                -(G[j][c] & halfdX), q[j][c], qMin[j][c], qMax[j][c],
-                noise[c], phi[j][c]
-            );
+            scalar p = 1;
+            if (dHi[c] > noise[c])
+            {
+                p = min(p, (hi[c] - qi[c])/dHi[c]);
+            }
+            if (dLo[c] < -noise[c])
+            {
+                p = min(p, (lo[c] - qi[c])/dLo[c]);
+            }
+            phi[c] = p;
+        }
+        if (serial)
+        {
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                g[c] *= phi[c];
+            }
+        }
+        else
+        {
+            phi_[i] = phi;
         }
     }
-    if (Pstream::parRun())
+
+    if (!serial)
     {
+        // A shared point's Phi is the smallest over all its edges
         fluxState one; one = 1.0;
         syncTools::syncPointList
         (
-            dual.mesh(), phi, fluxStateMinEqOp(), one
+            dual.mesh(), phi_, fluxStateMinEqOp(), one
         );
+        forAll(G, i)
+        {
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                G[i][c] *= phi_[i][c];
+            }
+        }
     }
 }
 

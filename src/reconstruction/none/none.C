@@ -16,19 +16,4 @@ namespace limiters
 }
 
 
-void Foam::limiters::none::limit
-(
-    const dualMesh& dual,
-    const UList<fluxState>& q,
-    const UList<fluxStateGradient>& G,
-    List<fluxState>& phi
-) const
-{
-    for (fluxState& p : phi)
-    {
-        p = 1.0;
-    }
-}
-
-
 // ************************************************************************* //

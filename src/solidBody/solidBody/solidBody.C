@@ -363,7 +363,6 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     if (secondOrder_)
     {
         q_.setSize(nPts);
-        phi_.setSize(nPts);
         G_.setSize(nPts);
         if (limiter_->usesBounds())
         {
@@ -527,7 +526,61 @@ void Foam::solidBody::startStage()
 }
 
 
+namespace
+{
+
+// The traction of a run-time selected interior Riemann solver (one virtual
+// call per edge)
+struct solverTraction
+{
+    const Foam::interiorRiemannSolver& solver;
+
+    Foam::vector operator()
+    (
+        const Foam::vector& tL, const Foam::vector& tR,
+        const Foam::vector& vL, const Foam::vector& vR,
+        const Foam::vector& n, const Foam::scalar Lambda
+    ) const
+    {
+        return solver.traction(tL, tR, vL, vR, n, Lambda);
+    }
+};
+
+// The acoustic stick traction with constant impedances, inlined
+struct stickTraction
+{
+    const Foam::scalar Zp, Zs;
+
+    Foam::vector operator()
+    (
+        const Foam::vector& tL, const Foam::vector& tR,
+        const Foam::vector& vL, const Foam::vector& vR,
+        const Foam::vector& n, const Foam::scalar
+    ) const
+    {
+        return Foam::acousticFormulas::stickTraction(tL, tR, vL, vR, n, Zp, Zs);
+    }
+};
+
+} // End anonymous namespace
+
+
 void Foam::solidBody::addInteriorFluxes()
+{
+    scalar Zp = 0, Zs = 0;
+    if (riemann_->constantImpedances(Zp, Zs))
+    {
+        addInteriorFluxes(stickTraction{Zp, Zs});
+    }
+    else
+    {
+        addInteriorFluxes(solverTraction{riemann_()});
+    }
+}
+
+
+template<class Traction>
+void Foam::solidBody::addInteriorFluxes(const Traction& traction)
 {
     const labelList& es = dual_.edgeStart();
     const labelList& ee = dual_.edgeEnd();
@@ -537,7 +590,6 @@ void Foam::solidBody::addInteriorFluxes()
     const List<tensor>& H = Hc();
 
     const scalar Sfactor = 0.5/material_->Zp();
-    const interiorRiemannSolver& riemann = riemann_();
 
     if (secondOrder_)
     {
@@ -549,12 +601,12 @@ void Foam::solidBody::addInteriorFluxes()
         {
             // The neighbourhood extrema in the gradient's pass
             greenGaussGradient(dual_, q_, G_, qMin_, qMax_);
-            limiter_->limit(dual_, q_, G_, qMin_, qMax_, phi_);
+            limiter_->limit(dual_, q_, G_, qMin_, qMax_);
         }
         else
         {
             greenGaussGradient(dual_, q_, G_);
-            limiter_->limit(dual_, q_, G_, phi_);
+            limiter_->limit(dual_, q_, G_);
         }
     }
 
@@ -579,7 +631,7 @@ void Foam::solidBody::addInteriorFluxes()
         const vector n(hN/mag(hN));
 
         // The upwind traction (the body's interior Riemann solver)
-        const vector tC(A*riemann.traction(PL & N, PR & N, vL, vR, n, mag(hN)));
+        const vector tC(A*traction(PL & N, PR & N, vL, vR, n, mag(hN)));
         Rp[i] += tC;
         Rp[j] -= tC;
 
@@ -606,7 +658,7 @@ void Foam::solidBody::addInteriorFluxes()
             const vector halfdX(0.5*(X[j] - X[i]));
             limiter_->midpointStates
             (
-                q_[i], q_[j], G_[i], G_[j], phi_[i], phi_[j], halfdX, qL, qR
+                q_[i], q_[j], G_[i], G_[j], halfdX, qL, qR
             );
             addEdgeFlux
             (

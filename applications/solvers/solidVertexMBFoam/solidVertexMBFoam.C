@@ -153,7 +153,13 @@ int main(int argc, char *argv[])
     for (const contactPair& c : contacts)
     {
         Info<< "Contact " << c.name() << ": largest interpenetration "
-            << c.maxPenetration() << " of the local edge length" << nl;
+            << c.maxPenetration() << " of the local edge length";
+        if (c.nonMatching())
+        {
+            Info<< "; " << c.nMappings() << " AMI mappings in "
+                << c.mappingTime() << " s";
+        }
+        Info<< nl;
     }
     for (const solidBody& b : bodies)
     {

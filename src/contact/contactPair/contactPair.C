@@ -9,6 +9,9 @@
 #include "uniformStateIO.H"
 #include "checkedInput.H"
 #include "timeDirectory.H"
+#include "AMIPatchToPatchInterpolation.H"
+#include "EdgeMap.H"
+#include "clockTime.H"
 
 // * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
 
@@ -31,6 +34,32 @@ inline vector pairNormal
     const scalar magN = mag(n);
     return magN > SMALL ? n/magN : a.n;
 }
+
+// Stand-in partner of a point without one (outside the other surface): its
+// own state facing back, so that the pair normal is the point's own normal;
+// such a point is always open (traction-free)
+inline contactPair::pointData mirrored(const contactPair::pointData& a)
+{
+    contactPair::pointData b(a);
+    b.n = -a.n;
+    b.t = -a.t;
+    return b;
+}
+
+// Lexicographic order of points (to merge processor copies of a point)
+struct lexicographicLess
+{
+    const UList<point>& X;
+
+    bool operator()(const label a, const label b) const
+    {
+        const point& p = X[a];
+        const point& q = X[b];
+        if (p.x() != q.x()) return p.x() < q.x();
+        if (p.y() != q.y()) return p.y() < q.y();
+        return p.z() < q.z();
+    }
+};
 
 template<class T>
 List<T> allGather(const List<T>& local)
@@ -158,7 +187,11 @@ void Foam::contactPair::checkOverlap() const
     forAll(A_.points, i)
     {
         const pointData& da = a[offsetA + i];
-        const pointData& db = b[A_.partner[i]];
+        pointData db;
+        if (!partnerData(A_, i, b, db))
+        {
+            continue;
+        }
         const scalar gap = pairGap(da, db);
         if (gap/da.length < worst)
         {
@@ -215,7 +248,342 @@ Foam::word Foam::contactPair::sharedPatch(const contactPair& other) const
 }
 
 
-void Foam::contactPair::matchSides()
+bool Foam::contactPair::partnerData
+(
+    const contactSide& side,
+    const label i,
+    const List<pointData>& other,
+    pointData& partner
+) const
+{
+    const labelList& from = side.stateFrom[i];
+    if (from.empty())
+    {
+        return false;
+    }
+    if (from.size() == 1)
+    {
+        // A matched partner (or a cell inside one of the other's)
+        partner = other[from[0]];
+        return true;
+    }
+    const scalarList& w = side.stateWeight[i];
+    partner = pointData{Zero, Zero, Zero, Zero, 0, 0};
+    forAll(from, m)
+    {
+        const pointData& d = other[from[m]];
+        partner.x += w[m]*d.x;
+        partner.v += w[m]*d.v;
+        partner.t += w[m]*d.t;
+        partner.n += w[m]*d.n;
+        partner.Lambda += w[m]*d.Lambda;
+        partner.length += w[m]*d.length;
+    }
+    partner.n = normalised(partner.n);
+    return true;
+}
+
+
+Foam::contactPair::dualSurface Foam::contactPair::buildSurface
+(
+    const contactSide& side
+) const
+{
+    dualSurface surface;
+
+    // The patch faces of all processors, over the gathered point list
+    const polyPatch& pp = side.body->mesh().boundaryMesh()[side.patchi];
+    const label offset = localOffset(side.points.size());
+    faceList localFaces(pp.localFaces());
+    for (face& f : localFaces)
+    {
+        for (label& p : f)
+        {
+            p += offset;
+        }
+    }
+    const faceList faces(allGather(localFaces));
+    const pointField X0
+    (
+        allGather(pointField(side.body->mesh().points(), side.points))
+    );
+
+    // Merge the processor copies of a point (same reference position)
+    labelList order(identity(X0.size()));
+    std::sort(order.begin(), order.end(), lexicographicLess{X0});
+    surface.copyUnique.setSize(X0.size());
+    label nUnique = 0;
+    forAll(order, k)
+    {
+        if (k > 0 && X0[order[k]] != X0[order[k - 1]])
+        {
+            ++nUnique;
+        }
+        surface.copyUnique[order[k]] = nUnique;
+    }
+    nUnique = X0.empty() ? 0 : nUnique + 1;
+    surface.uniqueCopies.setSize(nUnique);
+    forAll(X0, k)
+    {
+        surface.uniqueCopies[surface.copyUnique[k]].append(k);
+    }
+
+    // Sub-faces: (point, midpoint to next, face centre, midpoint to
+    // previous) of every face corner, as the dual mesh's boundary sub-faces
+    EdgeMap<label> midpoints(2*faces.size());
+    DynamicList<labelList> extra;
+    auto midpoint = [&](const label a, const label b)
+    {
+        const edge e(a, b);
+        const auto iter = midpoints.cfind(e);
+        if (iter.found())
+        {
+            return *iter;
+        }
+        const label m = nUnique + extra.size();
+        extra.append(labelList({a, b}));
+        midpoints.insert(e, m);
+        return m;
+    };
+
+    label nSub = 0;
+    for (const face& f : faces)
+    {
+        nSub += f.size();
+    }
+    surface.faces.setSize(nSub);
+    surface.faceOwner.setSize(nSub);
+    nSub = 0;
+    for (const face& f : faces)
+    {
+        labelList u(f.size());
+        forAll(f, fp)
+        {
+            u[fp] = surface.copyUnique[f[fp]];
+        }
+        const label centre = nUnique + extra.size();
+        extra.append(u);
+        forAll(u, fp)
+        {
+            const label a = u[fp];
+            const label next = u[f.fcIndex(fp)];
+            const label prev = u[f.rcIndex(fp)];
+            face& sub = surface.faces[nSub];
+            sub.setSize(4);
+            sub[0] = a;
+            sub[1] = midpoint(a, next);
+            sub[2] = centre;
+            sub[3] = midpoint(prev, a);
+            surface.faceOwner[nSub] = a;
+            ++nSub;
+        }
+    }
+    surface.extraPoints.transfer(extra);
+    return surface;
+}
+
+
+Foam::pointField Foam::contactPair::surfacePoints
+(
+    const dualSurface& surface,
+    const List<pointData>& data
+)
+{
+    const label nUnique = surface.uniqueCopies.size();
+    pointField P(nUnique + surface.extraPoints.size());
+    forAll(surface.uniqueCopies, u)
+    {
+        P[u] = data[surface.uniqueCopies[u][0]].x;
+    }
+    forAll(surface.extraPoints, k)
+    {
+        const labelList& from = surface.extraPoints[k];
+        point sum(Zero);
+        for (const label u : from)
+        {
+            sum += P[u];
+        }
+        P[nUnique + k] = sum/from.size();
+    }
+    return P;
+}
+
+
+bool Foam::contactPair::needsMapping() const
+{
+    bool moved = false;
+    for (const contactSide* side : {&A_, &B_})
+    {
+        const List<point>& x = side->body->x();
+        forAll(side->points, i)
+        {
+            const vector d(x[side->points[i]] - side->xMapped[i]);
+            const vector& N = side->N[i];
+            if (mag(d - (d & N)*N) > AMIUpdate_*side->length[i])
+            {
+                moved = true;
+                break;
+            }
+        }
+    }
+    return returnReduce(moved, orOp<bool>());
+}
+
+
+void Foam::contactPair::mapByAMI()
+{
+    const clockTime clock;
+    const List<pointData> a(gatherData(A_));
+    const List<pointData> b(gatherData(B_));
+    const pointField PA(surfacePoints(surfaceA_, a));
+    const pointField PB(surfacePoints(surfaceB_, b));
+    const primitivePatch patchA
+    (
+        SubList<face>(surfaceA_.faces, surfaceA_.faces.size()), PA
+    );
+    const primitivePatch patchB
+    (
+        SubList<face>(surfaceB_.faces, surfaceB_.faces.size()), PB
+    );
+
+    // Every processor maps the whole surfaces itself (the AMI in its
+    // serial mode: the surfaces are already complete on each)
+    const bool parRun = Pstream::parRun();
+    Pstream::parRun() = false;
+    const AMIPatchToPatchInterpolation ami
+    (
+        patchA,
+        patchB,
+        faceAreaIntersect::tmMesh,
+        false,                      // the surfaces may overlap in part
+        AMIPatchToPatchInterpolation::imFaceAreaWeight,
+        -1,                         // no low-weight correction
+        false                       // the surfaces face each other
+    );
+    Pstream::parRun() = parRun;
+
+    // Overlap areas of the unique points' dual cells: from the sub-face
+    // overlaps (weights x covered fraction x sub-face area)
+    const label nA = surfaceA_.uniqueCopies.size();
+    const label nB = surfaceB_.uniqueCopies.size();
+    List<Map<scalar>> overlapAB(nA), overlapBA(nB);
+    scalarField areaA(nA, 0.0), areaB(nB, 0.0);
+    forAll(ami.tgtMagSf(), f)
+    {
+        areaB[surfaceB_.faceOwner[f]] += ami.tgtMagSf()[f];
+    }
+    const labelListList& addr = ami.srcAddress();
+    const scalarListList& w = ami.srcWeights();
+    const scalarField& wSum = ami.srcWeightsSum();
+    const scalarList& magSf = ami.srcMagSf();
+    forAll(addr, f)
+    {
+        const label uA = surfaceA_.faceOwner[f];
+        areaA[uA] += magSf[f];
+        forAll(addr[f], m)
+        {
+            const label uB = surfaceB_.faceOwner[addr[f][m]];
+            const scalar area = w[f][m]*wSum[f]*magSf[f];
+            overlapAB[uA](uB) += area;
+            overlapBA[uB](uA) += area;
+        }
+    }
+
+    // Overlaps below this fraction of a cell are round-off (slivers of
+    // coincident meshes) and dropped
+    const scalar sliver = 1e-10;
+    scalarField coveredA(nA, 0.0);
+    forAll(overlapAB, uA)
+    {
+        for (const label uB : overlapAB[uA].sortedToc())
+        {
+            if (overlapAB[uA][uB] < sliver*areaA[uA])
+            {
+                overlapAB[uA].erase(uB);
+                overlapBA[uB].erase(uA);
+            }
+            else
+            {
+                coveredA[uA] += overlapAB[uA][uB];
+            }
+        }
+    }
+
+    // Partner states: the other side's first copies of the overlapped
+    // points, weighted by the overlap areas
+    auto fill = [&]
+    (
+        contactSide& side,
+        const dualSurface& own,
+        const dualSurface& other,
+        const List<Map<scalar>>& overlap
+    )
+    {
+        const label offset = localOffset(side.points.size());
+        side.stateFrom.setSize(side.points.size());
+        side.stateWeight.setSize(side.points.size());
+        forAll(side.points, i)
+        {
+            const Map<scalar>& row = overlap[own.copyUnique[offset + i]];
+            const labelList toc(row.sortedToc());
+            scalar sum = 0;
+            for (const label u : toc)
+            {
+                sum += row[u];
+            }
+            labelList& from = side.stateFrom[i];
+            scalarList& weight = side.stateWeight[i];
+            from.setSize(toc.size());
+            weight.setSize(toc.size());
+            forAll(toc, m)
+            {
+                from[m] = other.uniqueCopies[toc[m]][0];
+                weight[m] = row[toc[m]]/sum;
+            }
+        }
+    };
+    fill(A_, surfaceA_, surfaceB_, overlapAB);
+    fill(B_, surfaceB_, surfaceA_, overlapBA);
+
+    // B's force shares: each A point's force split over the B points its
+    // cell overlaps, in proportion to the overlap areas (every processor
+    // copy of the A point passes on its own part of the force)
+    const label offsetB = localOffset(B_.points.size());
+    B_.area.setSize(B_.points.size());
+    forAll(B_.points, i)
+    {
+        B_.area[i] = areaB[surfaceB_.copyUnique[offsetB + i]];
+    }
+    B_.forceFrom.setSize(B_.points.size());
+    B_.forceShare.setSize(B_.points.size());
+    forAll(B_.points, i)
+    {
+        const Map<scalar>& row = overlapBA[surfaceB_.copyUnique[offsetB + i]];
+        DynamicList<label> from;
+        DynamicList<scalar> share;
+        for (const label uA : row.sortedToc())
+        {
+            for (const label k : surfaceA_.uniqueCopies[uA])
+            {
+                from.append(k);
+                share.append(row[uA]/coveredA[uA]);
+            }
+        }
+        B_.forceFrom[i].transfer(from);
+        B_.forceShare[i].transfer(share);
+    }
+
+    for (contactSide* side : {&A_, &B_})
+    {
+        side->xMapped = pointField(side->body->x(), side->points);
+    }
+    ++nMappings_;
+    mappingTime_ += clock.elapsedTime();
+}
+
+
+
+bool Foam::contactPair::matchSides(const bool fatal)
 {
     const pointField& XA = A_.body->mesh().points();
     const pointField& XB = B_.body->mesh().points();
@@ -236,7 +604,7 @@ void Foam::contactPair::matchSides()
         const word& fromBody
     )
     {
-        partner.setSize(from.size());
+        partner.setSize(from.size(), -1);
         forAll(from, i)
         {
             scalar best = GREAT;
@@ -252,6 +620,10 @@ void Foam::contactPair::matchSides()
                     ibest = j;
                 }
             }
+            if ((ibest < 0 || best > 1e-6*len[i]) && !fatal)
+            {
+                return false;
+            }
             if (ibest < 0 || best > 1e-6*len[i])
             {
                 FatalIOErrorInFunction(dict_)
@@ -260,8 +632,9 @@ void Foam::contactPair::matchSides()
                     << from[i] << " has no partner on the other patch"
                     << " (nearest tangential distance " << best << ")."
                     << nl << "Matching (conforming) contact meshes are"
-                    << " needed: mesh both patches with the same surface"
-                    << " mesh."
+                    << " needed for 'mapping matching': mesh both patches"
+                    << " with the same surface mesh, or use 'mapping AMI'"
+                    << " (or auto) for any two surface meshes."
                     << (
                            magSqr(matchDirection_) > 0 ? "" :
                            "\n    Partners are searched along the normals of"
@@ -274,6 +647,7 @@ void Foam::contactPair::matchSides()
             }
             partner[i] = ibest;
         }
+        return true;
     };
 
     // All copies of each partner point (a point shared by processors
@@ -296,12 +670,24 @@ void Foam::contactPair::matchSides()
     };
 
     // A's points look along their own normal; B's along the normal of the
-    // nearest A point (A's normal defines the contact direction)
-    match
+    // nearest A point (A's normal defines the contact direction).  Every
+    // processor decides on the whole (gathered) lists, so all agree
+    labelList partnerA, partnerB;
+    if
     (
-        pointField(XA, A_.points), A_.N, A_.length, globalB, A_.partner,
-        A_.body->name()
-    );
+        !returnReduce
+        (
+            match
+            (
+                pointField(XA, A_.points), A_.N, A_.length, globalB,
+                partnerA, A_.body->name()
+            ),
+            andOp<bool>()
+        )
+    )
+    {
+        return false;
+    }
 
     vectorField NB(B_.points.size());
     forAll(B_.points, i)
@@ -319,12 +705,42 @@ void Foam::contactPair::matchSides()
         }
         NB[i] = globalNA[ibest];
     }
-    match
+    if
     (
-        pointField(XB, B_.points), NB, B_.length, globalA, B_.partner,
-        B_.body->name()
-    );
-    B_.partners = copies(B_.partner, globalA);
+        !returnReduce
+        (
+            match
+            (
+                pointField(XB, B_.points), NB, B_.length, globalA, partnerB,
+                B_.body->name()
+            ),
+            andOp<bool>()
+        )
+    )
+    {
+        return false;
+    }
+
+    // One partner each, weight 1: the partner state is exactly the
+    // partner's; B takes all of its partner's force (every copy)
+    for (contactSide* side : {&A_, &B_})
+    {
+        const labelList& partner = (side == &A_) ? partnerA : partnerB;
+        side->stateFrom.setSize(partner.size());
+        side->stateWeight.setSize(partner.size());
+        forAll(partner, i)
+        {
+            side->stateFrom[i] = labelList(1, partner[i]);
+            side->stateWeight[i] = scalarList(1, 1.0);
+        }
+    }
+    B_.forceFrom = copies(partnerB, globalA);
+    B_.forceShare.setSize(partnerB.size());
+    forAll(partnerB, i)
+    {
+        B_.forceShare[i] = scalarList(B_.forceFrom[i].size(), 1.0);
+    }
+    return true;
 }
 
 
@@ -536,6 +952,10 @@ Foam::contactPair::contactPair
     riemann_(contactRiemannSolver::New(dict)),
     friction_(frictionLaw::New(dict, "contact pair '" + name + "'")),
     matchDirection_(getFiniteOrDefault<vector>(dict, "matchDirection", Zero)),
+    useAMI_(false),
+    AMIUpdate_(dict.getOrDefault<scalar>("AMIUpdate", 0.1)),
+    nMappings_(0),
+    mappingTime_(0),
     maxPenetration_(0)
 {
     if (dict.found("s"))
@@ -548,7 +968,10 @@ Foam::contactPair::contactPair
     }
     wordList allowed
     (
-        {"bodyA", "patchA", "bodyB", "patchB", "riemannSolver", "matchDirection"}
+        {
+            "bodyA", "patchA", "bodyB", "patchB", "riemannSolver",
+            "matchDirection", "mapping", "AMIUpdate"
+        }
     );
     allowed.append(friction_->keywords());
     checkKeywords(dict, allowed);
@@ -596,7 +1019,43 @@ Foam::contactPair::contactPair
     setSide(B_, bodyB, dict.get<word>("patchB"));
 
     checkFacing();
-    matchSides();
+
+    const word mapping(dict.getOrDefault<word>("mapping", "auto"));
+    if (mapping != "auto" && mapping != "matching" && mapping != "AMI")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Contact pair '" << name << "': unknown mapping '" << mapping
+            << "'" << nl << "Valid: auto (matching patches point for point,"
+            << " others through the AMI), matching, AMI"
+            << exit(FatalIOError);
+    }
+    if (!(AMIUpdate_ > 0 && AMIUpdate_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Contact pair '" << name << "': AMIUpdate " << AMIUpdate_
+            << " is out of range: (0, 1] (a fraction of the edge length)"
+            << exit(FatalIOError);
+    }
+    if (mapping == "AMI" && magSqr(matchDirection_) > 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Contact pair '" << name << "': matchDirection pairs points"
+            << " of matching patches; it cannot be used with mapping AMI"
+            << exit(FatalIOError);
+    }
+    useAMI_ =
+        mapping == "AMI"
+     || (mapping == "auto" && !matchSides(mapping == "matching"));
+    if (mapping == "matching")
+    {
+        matchSides(true);
+    }
+    if (useAMI_)
+    {
+        surfaceA_ = buildSurface(A_);
+        surfaceB_ = buildSurface(B_);
+        mapByAMI();
+    }
     const bool restart = timeDirectory::isRestart(time());
     if (!restart)
     {
@@ -625,6 +1084,69 @@ void Foam::contactPair::write() const
 }
 
 
+void Foam::contactPair::addNonMatchingFluxesB()
+{
+    // A's forces first: B takes its shares of them
+    A_.body->residual().power += addSideFluxes(A_, true);
+    const vectorField forceA(allGather(A_.force));
+
+    // B's surface moves with the velocity its own outgoing characteristic
+    // gives under the contact traction of its partners on A (their point
+    // tractions averaged over its cell, as its partner state): for a
+    // matched pair that is the Riemann velocity itself.  Imposing A's
+    // contact velocities instead would over-determine B's boundary
+    // (traction and velocity both given) and crush its edge cells
+    const vectorField tCA(allGather(A_.tC));
+    const materialModel& mB = B_.body->material();
+    const label offsetB = localOffset(B_.points.size());
+    vectorField FB(B_.points.size(), Zero);
+    forAll(B_.points, i)
+    {
+        const labelList& from = B_.forceFrom[i];
+        const scalarList& share = B_.forceShare[i];
+        forAll(from, m)
+        {
+            FB[i] -= share[m]*forceA[from[m]];
+        }
+        const pointData& b = dataB_[offsetB + i];
+        const labelList& sfrom = B_.stateFrom[i];
+        const scalarList& w = B_.stateWeight[i];
+        B_.tC[i] = Zero;
+        forAll(sfrom, m)
+        {
+            B_.tC[i] -= w[m]*tCA[sfrom[m]];
+        }
+        // Split along the pair's normal, as the Riemann problem of a
+        // matched pair does
+        pointData partner;
+        const vector nB
+        (
+            partnerData(B_, i, dataA_, partner)
+          ? vector(-pairNormal(partner, b)) : b.n
+        );
+        B_.vC[i] = acousticFormulas::tractionVelocity
+        (
+            b.t, b.v, B_.tC[i], nB, mB.Zp(), mB.Zs()
+        );
+        if (B_.closed[i])
+        {
+            B_.body->residual().prescribeSurfaceVelocity
+            (
+                B_.points[i], B_.vC[i]
+            );
+        }
+    }
+    B_.body->residual().power += addSideFluxes(B_, false);
+
+    List<vector>& RpB = B_.body->residual().momentum;
+    const scalarField& wB = B_.body->dual().pointWeights();
+    forAll(B_.points, i)
+    {
+        RpB[B_.points[i]] += wB[B_.points[i]]*FB[i];
+    }
+}
+
+
 void Foam::contactPair::addFluxes()
 {
     dataA_ = gatherData(A_);
@@ -641,27 +1163,40 @@ void Foam::contactPair::addFluxes()
     // each other (B2: contact corners pulled past the plane by the side
     // surface rolling over).  Open pairs move with their nodal velocities.
     vector vOther;
+    pointData partner;
     forAll(A_.points, i)
     {
         const pointData& a = dataA_[offsetA + i];
-        const pointData& b = dataB_[A_.partner[i]];
-        pairState(A_.closed[i], a, b, A_.tC[i], A_.vC[i], vOther);
+        if (!partnerData(A_, i, dataB_, partner))
+        {
+            partner = mirrored(a);
+        }
+        pairState(A_.closed[i], a, partner, A_.tC[i], A_.vC[i], vOther);
         if (A_.closed[i])
         {
             A_.body->residual().prescribeSurfaceVelocity
             (
                 A_.points[i], A_.vC[i]
             );
-            const scalar pen = -pairGap(a, b);
+            const scalar pen = -pairGap(a, partner);
             maxPenetration_ = max(maxPenetration_, pen/a.length);
         }
+    }
+    if (useAMI_)
+    {
+        reduce(maxPenetration_, maxOp<scalar>());
+        addNonMatchingFluxesB();
+        return;
     }
     forAll(B_.points, i)
     {
         const pointData& b = dataB_[offsetB + i];
-        const pointData& a = dataA_[B_.partner[i]];
+        if (!partnerData(B_, i, dataA_, partner))
+        {
+            partner = mirrored(b);
+        }
         vector tC;
-        pairState(B_.closed[i], a, b, tC, vOther, B_.vC[i]);
+        pairState(B_.closed[i], partner, b, tC, vOther, B_.vC[i]);
         if (B_.closed[i])
         {
             B_.body->residual().prescribeSurfaceVelocity
@@ -673,9 +1208,10 @@ void Foam::contactPair::addFluxes()
     }
     reduce(maxPenetration_, maxOp<scalar>());
 
-    // A: its own integrated tractions.  B: minus the forces of its
-    // partners on A (summed over the processor copies of a partner, shared
-    // by B's processor copies of the point through the point weights)
+    // A: its own integrated tractions.  B: minus its shares of the forces
+    // of its partners on A (summed over the processor copies of a partner,
+    // shared by B's processor copies of the point through the point
+    // weights)
     A_.body->residual().power += addSideFluxes(A_, true);
     B_.body->residual().power += addSideFluxes(B_, false);
 
@@ -685,9 +1221,11 @@ void Foam::contactPair::addFluxes()
     forAll(B_.points, i)
     {
         vector F(Zero);
-        for (const label k : B_.partners[i])
+        const labelList& from = B_.forceFrom[i];
+        const scalarList& share = B_.forceShare[i];
+        forAll(from, m)
         {
-            F -= forceA[k];
+            F -= share[m]*forceA[from[m]];
         }
         RpB[B_.points[i]] += wB[B_.points[i]]*F;
     }
@@ -696,24 +1234,50 @@ void Foam::contactPair::addFluxes()
 
 void Foam::contactPair::startStep()
 {
+    if (useAMI_ && needsMapping())
+    {
+        mapByAMI();
+    }
+
     const List<pointData> a(gatherData(A_));
     const List<pointData> b(gatherData(B_));
-    const label offsetA = localOffset(A_.points.size());
 
-    // A's points against their partners; B's take their partner's flag
+    // A's points against their partner states.  B's points take the
+    // verdict of their partners on A (the overlap-weighted majority), so
+    // that a B point never receives forces from A as open or moves with A
+    // as closed on a verdict of its own: for a matched pair both points
+    // then have the same flag
+    const label offsetA = localOffset(A_.points.size());
     scalarField closedA(A_.points.size(), 0.0);
+    pointData partner;
     forAll(A_.points, i)
     {
         const pointData& da = a[offsetA + i];
-        const pointData& db = b[A_.partner[i]];
-        const scalar gap = pairGap(da, db);
-        A_.closed[i] = (gap <= gapTolerance*da.length);
+        const bool wasClosed = A_.closed[i];
+        A_.closed[i] = false;
+        if (partnerData(A_, i, b, partner))
+        {
+            // Non-matching surfaces: the two sides' points do not move in
+            // lock-step (each follows its own averaged partner), so a
+            // closed point stays closed while its gap is below
+            // holdTolerance; tension still releases it at once
+            const scalar tol =
+                (useAMI_ && wasClosed) ? holdTolerance : gapTolerance;
+            A_.closed[i] = (pairGap(da, partner) <= tol*da.length);
+        }
         closedA[i] = A_.closed[i];
     }
     const scalarField globalClosedA(allGather(closedA));
     forAll(B_.points, i)
     {
-        B_.closed[i] = (globalClosedA[B_.partner[i]] > 0.5);
+        const labelList& from = B_.stateFrom[i];
+        const scalarList& w = B_.stateWeight[i];
+        scalar fraction = 0;
+        forAll(from, m)
+        {
+            fraction += w[m]*globalClosedA[from[m]];
+        }
+        B_.closed[i] = (fraction > 0.5);
     }
 }
 
@@ -737,23 +1301,36 @@ Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
 {
     const List<pointData> a(gatherData(A_));
     const List<pointData> b(gatherData(B_));
-    const label offsetA = localOffset(A_.points.size());
 
+    // Both sides' points: on non-matching meshes a point of B can meet A
+    // between A's points
     scalar dt = GREAT;
-    forAll(A_.points, i)
+    for (const contactSide* side : {&A_, &B_})
     {
-        const pointData& da = a[offsetA + i];
-        const pointData& db = b[A_.partner[i]];
-        const vector n(gapDirection(pairNormal(da, db)));
-        const scalar gap = (db.x - da.x) & n;
-        const scalar closing = (da.v - db.v) & n;
-        if
-        (
-            gap > gapTolerance*da.length && closing > 0
-         && gap > closing*dtFloor
-        )
+        const bool isA = (side == &A_);
+        const List<pointData>& own = isA ? a : b;
+        const List<pointData>& other = isA ? b : a;
+        const label offset = localOffset(side->points.size());
+        pointData partner;
+        forAll(side->points, i)
         {
-            dt = min(dt, gap/closing);
+            if (!partnerData(*side, i, other, partner))
+            {
+                continue;
+            }
+            const pointData& da = isA ? own[offset + i] : partner;
+            const pointData& db = isA ? partner : own[offset + i];
+            const vector n(gapDirection(pairNormal(da, db)));
+            const scalar gap = (db.x - da.x) & n;
+            const scalar closing = (da.v - db.v) & n;
+            if
+            (
+                gap > gapTolerance*da.length && closing > 0
+             && gap > closing*dtFloor
+            )
+            {
+                dt = min(dt, gap/closing);
+            }
         }
     }
     reduce(dt, minOp<scalar>());
@@ -779,6 +1356,15 @@ void Foam::contactPair::describe(Ostream& os) const
     }
     os  << ", friction ";
     friction_->describe(os);
+    if (useAMI_)
+    {
+        os  << ", non-matching (AMI, remapped after slides of " << AMIUpdate_
+            << " edge lengths; first mapping " << mappingTime_ << " s)";
+    }
+    else
+    {
+        os  << ", matching point for point";
+    }
     os  << nl;
 }
 

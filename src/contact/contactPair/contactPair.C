@@ -456,22 +456,20 @@ void Foam::contactPair::mapByAMI()
         patchB,
         faceAreaIntersect::tmMesh,
         false,                      // the surfaces may overlap in part
-        AMIPatchToPatchInterpolation::imFaceAreaWeight,
+        // (the partial method walks on where the surfaces part instead of
+        // failing: curved surfaces in contact over part of their area)
+        AMIPatchToPatchInterpolation::imPartialFaceAreaWeight,
         -1,                         // no low-weight correction
         false                       // the surfaces face each other
     );
     Pstream::parRun() = parRun;
 
     // Overlap areas of the unique points' dual cells: from the sub-face
-    // overlaps (weights x covered fraction x sub-face area)
+    // overlaps (normalised weight x covered fraction x sub-face area)
     const label nA = surfaceA_.uniqueCopies.size();
     const label nB = surfaceB_.uniqueCopies.size();
     List<Map<scalar>> overlapAB(nA), overlapBA(nB);
-    scalarField areaA(nA, 0.0), areaB(nB, 0.0);
-    forAll(ami.tgtMagSf(), f)
-    {
-        areaB[surfaceB_.faceOwner[f]] += ami.tgtMagSf()[f];
-    }
+    scalarField areaA(nA, 0.0);
     const labelListList& addr = ami.srcAddress();
     const scalarListList& w = ami.srcWeights();
     const scalarField& wSum = ami.srcWeightsSum();
@@ -480,10 +478,13 @@ void Foam::contactPair::mapByAMI()
     {
         const label uA = surfaceA_.faceOwner[f];
         areaA[uA] += magSf[f];
+        // The weights are normalised by their sum or by the face area
+        // (depending on the AMI method); wSum is the covered fraction
+        const scalar sumW = sum(w[f]);
         forAll(addr[f], m)
         {
             const label uB = surfaceB_.faceOwner[addr[f][m]];
-            const scalar area = w[f][m]*wSum[f]*magSf[f];
+            const scalar area = w[f][m]/sumW*wSum[f]*magSf[f];
             overlapAB[uA](uB) += area;
             overlapBA[uB](uA) += area;
         }
@@ -549,11 +550,6 @@ void Foam::contactPair::mapByAMI()
     // cell overlaps, in proportion to the overlap areas (every processor
     // copy of the A point passes on its own part of the force)
     const label offsetB = localOffset(B_.points.size());
-    B_.area.setSize(B_.points.size());
-    forAll(B_.points, i)
-    {
-        B_.area[i] = areaB[surfaceB_.copyUnique[offsetB + i]];
-    }
     B_.forceFrom.setSize(B_.points.size());
     B_.forceShare.setSize(B_.points.size());
     forAll(B_.points, i)
@@ -571,6 +567,37 @@ void Foam::contactPair::mapByAMI()
         }
         B_.forceFrom[i].transfer(from);
         B_.forceShare[i].transfer(share);
+    }
+
+    // The overlap pairs are A's (point, partner) entries, flattened in the
+    // order of the gathered A points; each B point finds its pairs there
+    // (those of the first copy of each A point)
+    const label nCopiesA = surfaceA_.copyUnique.size();
+    labelList pairStart(nCopiesA + 1, 0);
+    for (label k = 0; k < nCopiesA; ++k)
+    {
+        pairStart[k + 1] =
+            pairStart[k] + overlapAB[surfaceA_.copyUnique[k]].size();
+    }
+    B_.pairIndex.setSize(B_.points.size());
+    forAll(B_.points, i)
+    {
+        const label uB = surfaceB_.copyUnique[offsetB + i];
+        const labelList toc(overlapBA[uB].sortedToc());
+        labelList& pairs = B_.pairIndex[i];
+        pairs.setSize(toc.size());
+        forAll(toc, m)
+        {
+            const label uA = toc[m];
+            pairs[m] =
+                pairStart[surfaceA_.uniqueCopies[uA][0]]
+              + overlapAB[uA].sortedToc().find(uB);
+        }
+    }
+    A_.pairClosed.setSize(A_.points.size());
+    forAll(A_.points, i)
+    {
+        A_.pairClosed[i] = boolList(A_.stateFrom[i].size(), false);
     }
 
     for (contactSide* side : {&A_, &B_})
@@ -1084,50 +1111,101 @@ void Foam::contactPair::write() const
 }
 
 
-void Foam::contactPair::addNonMatchingFluxesB()
+void Foam::contactPair::addNonMatchingFluxes()
 {
-    // A's forces first: B takes its shares of them
+    // One Riemann problem per overlap of an A cell with a B cell, between
+    // the two points' own states.  Each side's contact traction and
+    // velocity are the overlap-weighted averages of its pairs' solutions:
+    // every pair solution satisfies both sides' characteristic relations,
+    // so the averages do too (each side's boundary is consistent), and the
+    // two surfaces share one interface velocity field
+    const label offsetA = localOffset(A_.points.size());
+    const label offsetB = localOffset(B_.points.size());
+    label nPairs = 0;
+    forAll(A_.points, i)
+    {
+        nPairs += A_.stateFrom[i].size();
+    }
+    vectorField tPair(nPairs), vBPair(nPairs);
+    vector vA, vOther;
+    nPairs = 0;
+    forAll(A_.points, i)
+    {
+        const pointData& a = dataA_[offsetA + i];
+        const labelList& from = A_.stateFrom[i];
+        const scalarList& w = A_.stateWeight[i];
+        if (from.empty())
+        {
+            pairState(false, a, mirrored(a), A_.tC[i], A_.vC[i], vOther);
+            continue;
+        }
+        A_.tC[i] = Zero;
+        A_.vC[i] = Zero;
+        forAll(from, m)
+        {
+            const pointData& b = dataB_[from[m]];
+            const bool closed = A_.pairClosed[i][m];
+            pairState(closed, a, b, tPair[nPairs], vA, vBPair[nPairs]);
+            A_.tC[i] += w[m]*tPair[nPairs];
+            A_.vC[i] += w[m]*vA;
+            ++nPairs;
+        }
+        if (A_.closed[i])
+        {
+            // Interpenetration: against the other surface averaged over the
+            // cell (a pair's own gap on a curved surface also counts the
+            // surface's bow between the two points)
+            pointData partner;
+            partnerData(A_, i, dataB_, partner);
+            maxPenetration_ =
+                max(maxPenetration_, -pairGap(a, partner)/a.length);
+            A_.body->residual().prescribeSurfaceVelocity
+            (
+                A_.points[i], A_.vC[i]
+            );
+        }
+    }
+    reduce(maxPenetration_, maxOp<scalar>());
+
+    // A's forces: its tractions integrated over its sub-faces
     A_.body->residual().power += addSideFluxes(A_, true);
     const vectorField forceA(allGather(A_.force));
+    const vectorField tAll(allGather(tPair));
+    const vectorField vBAll(allGather(vBPair));
 
-    // B's surface moves with the velocity its own outgoing characteristic
-    // gives under the contact traction of its partners on A (their point
-    // tractions averaged over its cell, as its partner state): for a
-    // matched pair that is the Riemann velocity itself.  Imposing A's
-    // contact velocities instead would over-determine B's boundary
-    // (traction and velocity both given) and crush its edge cells
-    const vectorField tCA(allGather(A_.tC));
+    // B: its pairs' solutions averaged over its cell for its velocity (and
+    // the power), its shares of A's forces for its momentum, so that the
+    // momentum exchanged is equal and opposite to round-off
     const materialModel& mB = B_.body->material();
-    const label offsetB = localOffset(B_.points.size());
     vectorField FB(B_.points.size(), Zero);
     forAll(B_.points, i)
     {
+        const pointData& b = dataB_[offsetB + i];
+        const labelList& pairs = B_.pairIndex[i];
+        const scalarList& w = B_.stateWeight[i];
+        B_.tC[i] = Zero;
+        if (pairs.empty())
+        {
+            B_.vC[i] = acousticFormulas::tractionVelocity
+            (
+                b.t, b.v, Zero, b.n, mB.Zp(), mB.Zs()
+            );
+        }
+        else
+        {
+            B_.vC[i] = Zero;
+            forAll(pairs, m)
+            {
+                B_.tC[i] -= w[m]*tAll[pairs[m]];
+                B_.vC[i] += w[m]*vBAll[pairs[m]];
+            }
+        }
         const labelList& from = B_.forceFrom[i];
         const scalarList& share = B_.forceShare[i];
         forAll(from, m)
         {
             FB[i] -= share[m]*forceA[from[m]];
         }
-        const pointData& b = dataB_[offsetB + i];
-        const labelList& sfrom = B_.stateFrom[i];
-        const scalarList& w = B_.stateWeight[i];
-        B_.tC[i] = Zero;
-        forAll(sfrom, m)
-        {
-            B_.tC[i] -= w[m]*tCA[sfrom[m]];
-        }
-        // Split along the pair's normal, as the Riemann problem of a
-        // matched pair does
-        pointData partner;
-        const vector nB
-        (
-            partnerData(B_, i, dataA_, partner)
-          ? vector(-pairNormal(partner, b)) : b.n
-        );
-        B_.vC[i] = acousticFormulas::tractionVelocity
-        (
-            b.t, b.v, B_.tC[i], nB, mB.Zp(), mB.Zs()
-        );
         if (B_.closed[i])
         {
             B_.body->residual().prescribeSurfaceVelocity
@@ -1151,6 +1229,11 @@ void Foam::contactPair::addFluxes()
 {
     dataA_ = gatherData(A_);
     dataB_ = gatherData(B_);
+    if (useAMI_)
+    {
+        addNonMatchingFluxes();
+        return;
+    }
 
     const label offsetA = localOffset(A_.points.size());
     const label offsetB = localOffset(B_.points.size());
@@ -1181,12 +1264,6 @@ void Foam::contactPair::addFluxes()
             const scalar pen = -pairGap(a, partner);
             maxPenetration_ = max(maxPenetration_, pen/a.length);
         }
-    }
-    if (useAMI_)
-    {
-        reduce(maxPenetration_, maxOp<scalar>());
-        addNonMatchingFluxesB();
-        return;
     }
     forAll(B_.points, i)
     {
@@ -1242,6 +1319,40 @@ void Foam::contactPair::startStep()
     const List<pointData> a(gatherData(A_));
     const List<pointData> b(gatherData(B_));
 
+    if (useAMI_)
+    {
+        // Every overlap pair against its own gap; a point is closed (moves
+        // with its contact velocity) when the overlap-weighted majority of
+        // its pairs is.  The two sides' points do not move in lock-step,
+        // so the pairs of a closed point stay closed while their gap is
+        // below holdTolerance; tension still releases them at once
+        const label offsetA = localOffset(A_.points.size());
+        DynamicList<scalar> closedPairs;
+        forAll(A_.points, i)
+        {
+            const pointData& da = a[offsetA + i];
+            const labelList& from = A_.stateFrom[i];
+            const scalarList& w = A_.stateWeight[i];
+            const scalar tol =
+                (A_.closed[i] ? holdTolerance : gapTolerance)*da.length;
+            A_.pairClosed[i].setSize(from.size());
+            scalar fraction = 0;
+            forAll(from, m)
+            {
+                const bool closed = (pairGap(da, b[from[m]]) <= tol);
+                A_.pairClosed[i][m] = closed;
+                closedPairs.append(closed);
+                fraction += closed*w[m];
+            }
+            A_.closed[i] = (fraction > 0.5);
+        }
+        closeByMajority
+        (
+            B_, B_.pairIndex, allGather(scalarField(closedPairs))
+        );
+        return;
+    }
+
     // A's points against their partner states.  B's points take the
     // verdict of their partners on A (the overlap-weighted majority), so
     // that a B point never receives forces from A as open or moves with A
@@ -1253,31 +1364,34 @@ void Foam::contactPair::startStep()
     forAll(A_.points, i)
     {
         const pointData& da = a[offsetA + i];
-        const bool wasClosed = A_.closed[i];
         A_.closed[i] = false;
         if (partnerData(A_, i, b, partner))
         {
-            // Non-matching surfaces: the two sides' points do not move in
-            // lock-step (each follows its own averaged partner), so a
-            // closed point stays closed while its gap is below
-            // holdTolerance; tension still releases it at once
-            const scalar tol =
-                (useAMI_ && wasClosed) ? holdTolerance : gapTolerance;
-            A_.closed[i] = (pairGap(da, partner) <= tol*da.length);
+            A_.closed[i] = (pairGap(da, partner) <= gapTolerance*da.length);
         }
         closedA[i] = A_.closed[i];
     }
-    const scalarField globalClosedA(allGather(closedA));
-    forAll(B_.points, i)
+    closeByMajority(B_, B_.stateFrom, allGather(closedA));
+}
+
+
+void Foam::contactPair::closeByMajority
+(
+    contactSide& side,
+    const labelListList& index,
+    const scalarField& closedFlags
+)
+{
+    forAll(side.points, i)
     {
-        const labelList& from = B_.stateFrom[i];
-        const scalarList& w = B_.stateWeight[i];
+        const labelList& from = index[i];
+        const scalarList& w = side.stateWeight[i];
         scalar fraction = 0;
         forAll(from, m)
         {
-            fraction += w[m]*globalClosedA[from[m]];
+            fraction += w[m]*closedFlags[from[m]];
         }
-        B_.closed[i] = (fraction > 0.5);
+        side.closed[i] = (fraction > 0.5);
     }
 }
 
@@ -1302,35 +1416,43 @@ Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
     const List<pointData> a(gatherData(A_));
     const List<pointData> b(gatherData(B_));
 
-    // Both sides' points: on non-matching meshes a point of B can meet A
-    // between A's points
     scalar dt = GREAT;
-    for (const contactSide* side : {&A_, &B_})
+    auto limit = [&](const pointData& da, const pointData& db)
     {
-        const bool isA = (side == &A_);
-        const List<pointData>& own = isA ? a : b;
-        const List<pointData>& other = isA ? b : a;
-        const label offset = localOffset(side->points.size());
-        pointData partner;
-        forAll(side->points, i)
+        const vector n(gapDirection(pairNormal(da, db)));
+        const scalar gap = (db.x - da.x) & n;
+        const scalar closing = (da.v - db.v) & n;
+        if
+        (
+            gap > gapTolerance*da.length && closing > 0
+         && gap > closing*dtFloor
+        )
         {
-            if (!partnerData(*side, i, other, partner))
+            dt = min(dt, gap/closing);
+        }
+    };
+    if (useAMI_)
+    {
+        // Every overlap pair between its two points' own states
+        const label offsetA = localOffset(A_.points.size());
+        forAll(A_.points, i)
+        {
+            for (const label k : A_.stateFrom[i])
             {
-                continue;
+                limit(a[offsetA + i], b[k]);
             }
-            const pointData& da = isA ? own[offset + i] : partner;
-            const pointData& db = isA ? partner : own[offset + i];
-            const vector n(gapDirection(pairNormal(da, db)));
-            const scalar gap = (db.x - da.x) & n;
-            const scalar closing = (da.v - db.v) & n;
-            if
-            (
-                gap > gapTolerance*da.length && closing > 0
-             && gap > closing*dtFloor
-            )
-            {
-                dt = min(dt, gap/closing);
-            }
+        }
+        return returnReduce(dt, minOp<scalar>());
+    }
+
+    // A's points against their matched partners
+    const label offsetA = localOffset(A_.points.size());
+    pointData partner;
+    forAll(A_.points, i)
+    {
+        if (partnerData(A_, i, b, partner))
+        {
+            limit(a[offsetA + i], partner);
         }
     }
     reduce(dt, minOp<scalar>());

@@ -411,22 +411,43 @@ Foam::pointField Foam::contactPair::surfacePoints
 
 bool Foam::contactPair::needsMapping() const
 {
-    bool moved = false;
+    // Displacements since the last mapping, of all points of both sides
+    auto moved = [](const contactSide& side)
+    {
+        const pointField x(side.body->x(), side.points);
+        return vectorField(allGather(vectorField(x - side.xMapped)));
+    };
+    const vectorField dA(moved(A_)), dB(moved(B_));
+
+    // A point's slide relative to its partners (their overlap-weighted
+    // displacement), tangentially: surfaces that move or spread together
+    // (two bars' faces widening as they are compressed) keep their
+    // overlaps, and remapping them would only perturb the contact
+    bool slid = false;
     for (const contactSide* side : {&A_, &B_})
     {
-        const List<point>& x = side->body->x();
+        const bool isA = (side == &A_);
+        const vectorField& own = isA ? dA : dB;
+        const vectorField& other = isA ? dB : dA;
+        const label offset = localOffset(side->points.size());
         forAll(side->points, i)
         {
-            const vector d(x[side->points[i]] - side->xMapped[i]);
+            vector d(own[offset + i]);
+            const labelList& from = side->stateFrom[i];
+            const scalarList& w = side->stateWeight[i];
+            forAll(from, m)
+            {
+                d -= w[m]*other[from[m]];
+            }
             const vector& N = side->N[i];
             if (mag(d - (d & N)*N) > AMIUpdate_*side->length[i])
             {
-                moved = true;
+                slid = true;
                 break;
             }
         }
     }
-    return returnReduce(moved, orOp<bool>());
+    return returnReduce(slid, orOp<bool>());
 }
 
 

@@ -412,12 +412,12 @@ Foam::pointField Foam::contactPair::surfacePoints
 bool Foam::contactPair::needsMapping() const
 {
     // Displacements since the last mapping, of all points of both sides
-    auto moved = [](const contactSide& side)
+    auto displacement = [](const contactSide& side)
     {
         const pointField x(side.body->x(), side.points);
         return vectorField(allGather(vectorField(x - side.xMapped)));
     };
-    const vectorField dA(moved(A_)), dB(moved(B_));
+    const vectorField dA(displacement(A_)), dB(displacement(B_));
 
     // A point's slide relative to its partners (their overlap-weighted
     // displacement), tangentially: surfaces that move or spread together

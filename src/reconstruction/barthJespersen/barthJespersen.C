@@ -62,8 +62,6 @@ void Foam::limiters::barthJespersen::limitPoints
     if (!GivenBounds && !serial)
     {
         // Extrema over the processor's edges, completed below
-        const labelList& es = dual.edgeStart();
-        const labelList& ee = dual.edgeEnd();
         qMin = q;
         qMax = q;
         forAll(es, e)

@@ -98,7 +98,9 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     const scalar Zs,
     const scalar t,
     UList<vector>& Rp,
-    UList<tensor>& RF
+    UList<tensor>& RF,
+    UList<vector>& tB,
+    UList<vector>& vB
 ) const
 {
     const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
@@ -141,6 +143,8 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         Rp[i] += magA*tC;
         RF[i] += vC*sf.area[s];
         power += magA*pC;
+        tB[s] = tC;
+        vB[s] = vC;
     }
 
     return power;

@@ -949,8 +949,12 @@ Foam::scalar Foam::contactPair::addSideFluxes
 {
     solidBody& body = *side.body;
     const dualMesh::patchSubFaces& sf = body.dual().subFaces(side.patchi);
-    List<vector>& Rp = body.residual().momentum;
-    List<tensor>& RF = body.residual().F;
+    stageResidual& R = body.residual();
+    List<vector>& Rp = R.momentum;
+    List<tensor>& RF = R.F;
+    List<vector>& tB = R.boundaryTraction[side.patchi];
+    List<vector>& vB = R.boundaryVelocity[side.patchi];
+    R.boundarySet[side.patchi] = true;
 
     side.force = Zero;
     scalar power = 0;
@@ -974,6 +978,8 @@ Foam::scalar Foam::contactPair::addSideFluxes
         side.force[i] += magA*tC;
         RF[sf.point[s]] += vC*sf.area[s];
         power += magA*pC;
+        tB[s] = tC;
+        vB[s] = vC;
     }
     if (tractions)
     {

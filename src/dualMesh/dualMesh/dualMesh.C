@@ -306,6 +306,60 @@ void Foam::dualMesh::calcPointEdges()
 }
 
 
+void Foam::dualMesh::calcBoundaryNormals()
+{
+    // Patch by patch (the same physical patches on every processor, before
+    // the processor patches), each point's patch normal with the part
+    // along the normals already taken removed; a normal within about 17
+    // degrees of those (a curved patch continuing another) adds nothing
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    FixedList<vector, 3> none;
+    none = Zero;
+    List<FixedList<vector, 3>> normals(nPoints(), none);
+    labelList nNormals(nPoints(), 0);
+    forAll(patches, patchi)
+    {
+        if (patches[patchi].coupled())
+        {
+            continue;
+        }
+        const vectorField N(patchPointNormals(patchi));
+        forAll(N, i)
+        {
+            if (magSqr(N[i]) > 0.25 && nNormals[i] < 3)
+            {
+                vector r(N[i]);
+                for (label k = 0; k < nNormals[i]; ++k)
+                {
+                    r -= (normals[i][k] & N[i])*normals[i][k];
+                }
+                const scalar magR = mag(r);
+                if (magR > 0.3)
+                {
+                    normals[i][nNormals[i]++] = r/magR;
+                }
+            }
+        }
+    }
+
+    DynamicList<label> points;
+    DynamicList<FixedList<vector, 3>> pointNormals;
+    boundaryIndex_.setSize(nPoints());
+    boundaryIndex_ = -1;
+    forAll(nNormals, i)
+    {
+        if (nNormals[i])
+        {
+            boundaryIndex_[i] = points.size();
+            points.append(i);
+            pointNormals.append(normals[i]);
+        }
+    }
+    boundaryPoints_.transfer(points);
+    boundaryNormals_.transfer(pointNormals);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dualMesh::dualMesh(const polyMesh& mesh)
@@ -322,7 +376,10 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     pointWeight_(mesh.nPoints(), 1.0),
     patchSubFaces_(),
     pointEdgeStart_(),
-    pointEdges_()
+    pointEdges_(),
+    boundaryPoints_(),
+    boundaryNormals_(),
+    boundaryIndex_()
 {
     const edgeList& edges = mesh.edges();
     const pointField& X = mesh.points();
@@ -342,6 +399,7 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     calcBoundarySubFaces();
     synchronise();
     calcPointEdges();
+    calcBoundaryNormals();
 
     forAll(volume_, i)
     {

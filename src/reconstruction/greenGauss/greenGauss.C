@@ -4,9 +4,141 @@
 \*---------------------------------------------------------------------------*/
 
 #include "greenGauss.H"
+#include "stageResidual.H"
 
 namespace
 {
+
+// The Green-Gauss sums (not yet divided by the volumes) of the boundary
+// points with the slope of the incoming waves along each patch normal N
+// from the boundary (greenGauss.H).  Along N, with t = P N and
+// Z = Zp N N + Zs (I - N N), the waves leaving through the face carry
+// t - Z v, the ones the face sends in t + Z v; the second's derivative
+// a = d_N t + Z d_N v becomes the boundary's a_B = sum_g (dt + Z dv) C_g.N,
+// and the change (a_B - a)/2 goes to d_N t and Z^-1 (a_B - a)/2 to d_N v,
+// which leaves the outgoing d_N t - Z d_N v as it was
+void boundarySlopes
+(
+    const Foam::dualMesh& dual,
+    const Foam::UList<Foam::fluxState>& q,
+    const Foam::stageResidual& R,
+    const Foam::scalar Zp,
+    const Foam::scalar Zs,
+    Foam::List<Foam::fluxStateGradient>& G
+)
+{
+    using namespace Foam;
+    const polyBoundaryMesh& patches = dual.mesh().boundaryMesh();
+    const labelList& bp = dual.boundaryPoints();
+    const List<FixedList<vector, 3>>& bn = dual.boundaryNormals();
+    const labelList& index = dual.boundaryIndex();
+
+    // The boundary's a_B per boundary point and normal
+    FixedList<vector, 3> none;
+    none = Zero;
+    List<FixedList<vector, 3>> aB(bp.size(), none);
+    forAll(patches, patchi)
+    {
+        if (!R.boundarySet[patchi])
+        {
+            continue;
+        }
+        const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
+        const List<vector>& tB = R.boundaryTraction[patchi];
+        const List<vector>& vB = R.boundaryVelocity[patchi];
+        forAll(sf.point, s)
+        {
+            const label i = sf.point[s];
+            const label b = index[i];
+            const scalar w = sf.nbrWeight[s];
+            const fluxState& qi = q[i];
+            const fluxState& qp = q[sf.prev[s]];
+            const fluxState& qn = q[sf.next[s]];
+            fluxState qg;
+            for (direction c = 0; c < 12; ++c)
+            {
+                qg[c] = qi[c] + w*(qp[c] + qn[c] - 2*qi[c]);
+            }
+
+            // The sub-face's normal among the point's patch normals
+            const vector& A = sf.area[s];
+            label k = 0;
+            for (label m = 1; m < 3; ++m)
+            {
+                if (mag(bn[b][m] & A) > mag(bn[b][k] & A))
+                {
+                    k = m;
+                }
+            }
+            const vector& N = bn[b][k];
+
+            // Jumps to the Riemann state of the sub-face
+            const vector dt
+            (
+                tB[s]
+              - vector
+                (
+                    qg[3]*N.x() + qg[4]*N.y() + qg[5]*N.z(),
+                    qg[6]*N.x() + qg[7]*N.y() + qg[8]*N.z(),
+                    qg[9]*N.x() + qg[10]*N.y() + qg[11]*N.z()
+                )
+            );
+            const vector dv(vB[s] - vector(qg[0], qg[1], qg[2]));
+            const scalar dvN = dv & N;
+            aB[b][k] += (dt + Zp*dvN*N + Zs*(dv - dvN*N))*(A & N);
+        }
+    }
+
+    // (every boundary point, also on a processor without its sub-faces:
+    // the map is linear in the partial sums, so the processors' parts add
+    // up to the map of the whole)
+    forAll(bp, b)
+    {
+        fluxStateGradient& Gi = G[bp[b]];
+        for (label k = 0; k < 3; ++k)
+        {
+            const vector& N = bn[b][k];
+            if (magSqr(N) < 0.5)
+            {
+                break;
+            }
+
+            // Derivatives along N of v and of t = P N
+            const vector dv(Gi[0] & N, Gi[1] & N, Gi[2] & N);
+            vector dt(Zero);
+            for (direction a = 0; a < 3; ++a)
+            {
+                for (direction c = 0; c < 3; ++c)
+                {
+                    dt[a] += (Gi[3 + 3*a + c] & N)*N[c];
+                }
+            }
+            const scalar dvN = dv & N;
+            const vector a(dt + Zp*dvN*N + Zs*(dv - dvN*N));
+
+            const vector half(0.5*(aB[b][k] - a));
+
+            // d_N t += half (as P += half N along N), d_N v += Z^-1 half
+            // (no tangential waves without a shear impedance)
+            const scalar halfN = half & N;
+            const vector halfT(half - halfN*N);
+            const vector dvNew
+            (
+                (halfN/Zp)*N + (Zs > VSMALL ? halfT/Zs : vector::zero)
+            );
+            const vector dtNew(Zs > VSMALL ? half : halfN*N);
+            for (direction a = 0; a < 3; ++a)
+            {
+                Gi[a] += dvNew[a]*N;
+                for (direction c = 0; c < 3; ++c)
+                {
+                    Gi[3 + 3*a + c] += (dtNew[a]*N[c])*N;
+                }
+            }
+        }
+    }
+}
+
 
 // One pass over the edges: the Green-Gauss sums and, when Bounds, the
 // neighbourhood extrema (the limiter's pass over the same data)
@@ -17,7 +149,10 @@ void gradientAndBounds
     const Foam::UList<Foam::fluxState>& q,
     Foam::List<Foam::fluxStateGradient>& G,
     Foam::List<Foam::fluxState>& qMin,
-    Foam::List<Foam::fluxState>& qMax
+    Foam::List<Foam::fluxState>& qMax,
+    const Foam::stageResidual* R,
+    const Foam::scalar Zp,
+    const Foam::scalar Zs
 )
 {
     using namespace Foam;
@@ -80,6 +215,15 @@ void gradientAndBounds
         }
     }
 
+    // Boundary points with the stage's boundary states: along each patch
+    // normal, the slope of the wave the boundary sends in from the jump to
+    // the Riemann state, the others from the interior (all linear in G and
+    // the jumps: before the processor sums)
+    if (R)
+    {
+        boundarySlopes(dual, q, *R, Zp, Zs, G);
+    }
+
     if (Pstream::parRun())
     {
         syncTools::syncPointList
@@ -105,11 +249,14 @@ void Foam::greenGaussGradient
 (
     const dualMesh& dual,
     const UList<fluxState>& q,
-    List<fluxStateGradient>& G
+    List<fluxStateGradient>& G,
+    const stageResidual* R,
+    const scalar Zp,
+    const scalar Zs
 )
 {
     List<fluxState> unused;
-    gradientAndBounds<false>(dual, q, G, unused, unused);
+    gradientAndBounds<false>(dual, q, G, unused, unused, R, Zp, Zs);
 }
 
 
@@ -119,10 +266,13 @@ void Foam::greenGaussGradient
     const UList<fluxState>& q,
     List<fluxStateGradient>& G,
     List<fluxState>& qMin,
-    List<fluxState>& qMax
+    List<fluxState>& qMax,
+    const stageResidual* R,
+    const scalar Zp,
+    const scalar Zs
 )
 {
-    gradientAndBounds<true>(dual, q, G, qMin, qMax);
+    gradientAndBounds<true>(dual, q, G, qMin, qMax, R, Zp, Zs);
 }
 
 

@@ -35,13 +35,35 @@ void Foam::solidBody::readScheme()
         scheme,
         {
             "secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw",
-            "energyStable", "riemannSolver"
+            "energyStable", "riemannSolver", "FStabilisation",
+            "boundarySlope"
         }
     );
 
     JLaw_ = scheme.getOrDefault<Switch>("JLaw", true);
     HLaw_ = scheme.getOrDefault<Switch>("HLaw", false);
     secondOrder_ = scheme.getOrDefault<Switch>("secondOrder", true);
+    // Off by default: with the upwind velocity in F the ring, torus, B2,
+    // Taylor bar and Hugoniot bar tutorials are not stable at their CFL
+    // numbers yet, and smooth vibration loses about twice the energy
+    // (doc/results.md, "Contact onset and release")
+    FStabilisation_ = scheme.getOrDefault<Switch>("FStabilisation", false);
+    {
+        const word slope
+        (
+            scheme.getOrDefault<word>("boundarySlope", "interior")
+        );
+        if (slope != "interior" && slope != "riemann")
+        {
+            FatalIOErrorInFunction(scheme)
+                << "scheme/boundarySlope '" << slope << "' in "
+                << scheme.name() << " is not allowed." << nl
+                << "    Valid: interior (Green-Gauss, the default) or"
+                << " riemann (the incoming waves' slope from the boundary's"
+                << " Riemann states)" << exit(FatalIOError);
+        }
+        riemannBoundarySlope_ = (slope == "riemann");
+    }
     // Off by default: its one blending factor per body lowers the order of
     // the whole body where one place produces energy, which costs the 1D
     // wall reflection 0.9 % of its plateau accuracy (doc/design.md)
@@ -360,6 +382,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     P_.setSize(nPts);
     SigmaJ_.setSize(nPts);
     residual_.setSize(nPts, JLaw_);
+    residual_.setBoundarySize(dual_);
     if (secondOrder_)
     {
         q_.setSize(nPts);
@@ -589,7 +612,19 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     const pointField& X = mesh_.points();
     const List<tensor>& H = Hc();
 
+    // The velocity's upwind part in the F flux (the Riemann velocity's
+    // traction-jump term, doc/method.md section 4).  Through J' = H : D it
+    // damps the jump of the normal traction, and with it the jump of
+    // Sigma_J, with the coefficient of the J stabilisation itself
+    // (|H C|^2/(2 Zp |C|)): with it the J stabilisation is already there,
+    // and adding it again damps a checkerboard of J at twice the rate the
+    // stable step allows
+    const bool JStabilisation = JLaw_ && !FStabilisation_;
     const scalar Sfactor = 0.5/material_->Zp();
+    const scalar vStabP = FStabilisation_ ? 0.5/material_->Zp() : 0;
+    const scalar vStabS =
+        FStabilisation_ && material_->Zs() > VSMALL
+      ? 0.5/material_->Zs() : 0;
 
     if (secondOrder_)
     {
@@ -600,12 +635,21 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         if (limiter_->usesBounds())
         {
             // The neighbourhood extrema in the gradient's pass
-            greenGaussGradient(dual_, q_, G_, qMin_, qMax_);
+            greenGaussGradient
+            (
+                dual_, q_, G_, qMin_, qMax_,
+                riemannBoundarySlope_ ? &residual_ : nullptr,
+                material_->Zp(), material_->Zs()
+            );
             limiter_->limit(dual_, q_, G_, qMin_, qMax_);
         }
         else
         {
-            greenGaussGradient(dual_, q_, G_);
+            greenGaussGradient
+            (
+                dual_, q_, G_, riemannBoundarySlope_ ? &residual_ : nullptr,
+                material_->Zp(), material_->Zs()
+            );
             limiter_->limit(dual_, q_, G_);
         }
     }
@@ -631,22 +675,42 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         const vector n(hN/mag(hN));
 
         // The upwind traction (the body's interior Riemann solver)
-        const vector tC(A*traction(PL & N, PR & N, vL, vR, n, mag(hN)));
+        const vector tL(PL & N), tR(PR & N);
+        const vector tC(A*traction(tL, tR, vL, vR, n, mag(hN)));
         Rp[i] += tC;
         Rp[j] -= tC;
 
-        // Un-stabilised average velocity: preserves the involutions
-        const tensor vN((0.5*A)*(vL + vR)*N);
+        // The upwind (Riemann) velocity: average plus the traction jump
+        // over twice the impedances
+        const vector dt(tR - tL);
+        const scalar dtn = dt & n;
+        const vector vC
+        (
+            0.5*(vL + vR) + (vStabP*dtn)*n + vStabS*(dt - dtn*n)
+        );
+        const tensor vN(A*vC*N);
         RF[i] += vN;
         RF[j] -= vN;
 
-        if (JLaw_)
+        if (JStabilisation)
         {
             const scalar dS = Sfactor*A*(hN & hN)*(SJR - SJL);
             RJ[i] += dS;
             RJ[j] -= dS;
         }
     };
+
+    // Energy stability blends the interior residuals only: set the
+    // boundary and contact ones (added before) aside
+    List<vector> boundaryMomentum;
+    List<tensor> boundaryF;
+    if (energyStability_.valid())
+    {
+        boundaryMomentum.transfer(residual_.momentum);
+        boundaryF.transfer(residual_.F);
+        residual_.momentum.setSize(boundaryMomentum.size(), Zero);
+        residual_.F.setSize(boundaryF.size(), Zero);
+    }
 
     // Interior fluxes: one pass over the edges
     if (secondOrder_)
@@ -708,6 +772,11 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             ++nEnergyLimited_;
             minEnergyTheta_ = min(minEnergyTheta_, theta);
         }
+        forAll(boundaryMomentum, i)
+        {
+            residual_.momentum[i] += boundaryMomentum[i];
+            residual_.F[i] += boundaryF[i];
+        }
     }
 
 }
@@ -720,7 +789,14 @@ void Foam::solidBody::addBoundaryFluxes(const scalar t)
     const scalar Zs = material_->Zs();
     for (const solidBoundaryCondition& bc : bcs_)
     {
-        residual_.power += bc.addFluxes(x_, v_, P_, H, Zp, Zs, t, residual_.momentum, residual_.F);
+        const label patchi = bc.patchi();
+        residual_.power += bc.addFluxes
+        (
+            x_, v_, P_, H, Zp, Zs, t, residual_.momentum, residual_.F,
+            residual_.boundaryTraction[patchi],
+            residual_.boundaryVelocity[patchi]
+        );
+        residual_.boundarySet[patchi] = true;
     }
 
 }
@@ -943,13 +1019,14 @@ void Foam::solidBody::describe(Ostream& os) const
         << nl << "    scheme     ";
     if (secondOrder_)
     {
-        os  << "second order, limiter " << limiter_->type().c_str();
+        os  << "second order, limiter " << limiter_->type().c_str()
+            << (riemannBoundarySlope_ ? ", boundary slopes from Riemann" : "");
     }
     else
     {
         os  << "first order (Godunov)";
     }
-    os  << ", Riemann solver ";
+    os  << (FStabilisation_ ? ", upwind F flux" : "") << ", Riemann solver ";
     riemann_->describe(os);
     os  << nl;
     if (returnReduce(planeStrain_->size(), sumOp<label>()))

@@ -16,6 +16,21 @@ void Foam::stageResidual::setSize(const label nPoints, const bool JLaw)
 }
 
 
+void Foam::stageResidual::setBoundarySize(const dualMesh& dual)
+{
+    const label nPatches = dual.mesh().boundaryMesh().size();
+    boundaryTraction.setSize(nPatches);
+    boundaryVelocity.setSize(nPatches);
+    boundarySet.setSize(nPatches, false);
+    forAll(boundaryTraction, patchi)
+    {
+        const label n = dual.subFaces(patchi).point.size();
+        boundaryTraction[patchi].setSize(n);
+        boundaryVelocity[patchi].setSize(n);
+    }
+}
+
+
 void Foam::stageResidual::reset()
 {
     momentum = Zero;
@@ -24,6 +39,7 @@ void Foam::stageResidual::reset()
     power = 0;
     surfacePoints.clear();
     surfaceVelocities.clear();
+    boundarySet = false;
 }
 
 

@@ -41,10 +41,8 @@ void residuals
     {
         b.startStage();
     }
-    for (Foam::solidBody& b : bodies)
-    {
-        b.addInteriorFluxes();
-    }
+    // Boundary and contact fluxes first: their Riemann states are the
+    // boundary values of the interior reconstruction (greenGauss.H)
     for (Foam::solidBody& b : bodies)
     {
         b.addBoundaryFluxes(t);
@@ -52,6 +50,10 @@ void residuals
     for (Foam::contactPair& c : contacts)
     {
         c.addFluxes();
+    }
+    for (Foam::solidBody& b : bodies)
+    {
+        b.addInteriorFluxes();
     }
     for (Foam::solidBody& b : bodies)
     {

@@ -43,10 +43,9 @@ void Foam::solidBody::readScheme()
     JLaw_ = scheme.getOrDefault<Switch>("JLaw", true);
     HLaw_ = scheme.getOrDefault<Switch>("HLaw", false);
     secondOrder_ = scheme.getOrDefault<Switch>("secondOrder", true);
-    // Off by default: with the upwind velocity in F the ring, torus, B2,
-    // Taylor bar and Hugoniot bar tutorials are not stable at their CFL
-    // numbers yet, and smooth vibration loses about twice the energy
-    // (doc/results.md, "Contact onset and release")
+    // Off by default: with the upwind velocity in F bending with large
+    // rotation loses most of its energy (the ring tutorial) and smooth
+    // vibration about twice as much (doc/method.md, section 8)
     FStabilisation_ = scheme.getOrDefault<Switch>("FStabilisation", false);
     {
         const word slope

@@ -44,8 +44,8 @@ void Foam::solidBody::readScheme()
     HLaw_ = scheme.getOrDefault<Switch>("HLaw", false);
     secondOrder_ = scheme.getOrDefault<Switch>("secondOrder", true);
     // Off by default: with the upwind velocity in F bending with large
-    // rotation loses most of its energy (the ring tutorial) and smooth
-    // vibration about twice as much (doc/method.md, section 8)
+    // rotation loses most of its energy (the ring tutorial; doc/method.md,
+    // section 8)
     FStabilisation_ = scheme.getOrDefault<Switch>("FStabilisation", false);
     {
         const word slope
@@ -680,8 +680,20 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         Rp[j] -= tC;
 
         // The upwind (Riemann) velocity: average plus the traction jump
-        // over twice the impedances
-        const vector dt(tR - tL);
+        // over twice the impedances, weighted by how much of the points'
+        // own jump the reconstruction left: one at a front the limiter
+        // has cut back to first order, of the order of the mesh size where
+        // the solution is smooth (there the full term damped bending on
+        // coarse meshes many times more than the momentum's upwinding:
+        // doc/method.md, section 8)
+        vector dt(tR - tL);
+        if (vStabP > 0)
+        {
+            const scalar jump1 = mag((P_[j] - P_[i]) & N);
+            const scalar w =
+                jump1 > VSMALL ? min(1.0, 2*mag(dt)/jump1) : 1.0;
+            dt *= w;
+        }
         const scalar dtn = dt & n;
         const vector vC
         (

@@ -14,9 +14,10 @@ namespace
 // from the boundary (greenGauss.H).  Along N, with t = P N and
 // Z = Zp N N + Zs (I - N N), the waves leaving through the face carry
 // t - Z v, the ones the face sends in t + Z v; the second's derivative
-// a = d_N t + Z d_N v becomes the boundary's a_B = sum_g (dt + Z dv) C_g.N,
-// and the change (a_B - a)/2 goes to d_N t and Z^-1 (a_B - a)/2 to d_N v,
-// which leaves the outgoing d_N t - Z d_N v as it was
+// aIn = d_N t + Z d_N v becomes the boundary's
+// a_B = sum_g (dt + Z dv) C_g.N, and the change (a_B - aIn)/2 goes to d_N t
+// and Z^-1 (a_B - aIn)/2 to d_N v, which leaves the outgoing
+// d_N t - Z d_N v as it was
 void boundarySlopes
 (
     const Foam::dualMesh& dual,
@@ -114,25 +115,24 @@ void boundarySlopes
                 }
             }
             const scalar dvN = dv & N;
-            const vector a(dt + Zp*dvN*N + Zs*(dv - dvN*N));
-
-            const vector half(0.5*(aB[b][k] - a));
+            const vector aIn(dt + Zp*dvN*N + Zs*(dv - dvN*N));
+            const vector half(0.5*(aB[b][k] - aIn));
 
             // d_N t += half (as P += half N along N), d_N v += Z^-1 half
             // (no tangential waves without a shear impedance)
             const scalar halfN = half & N;
             const vector halfT(half - halfN*N);
-            const vector dvNew
+            const vector dvIncrement
             (
                 (halfN/Zp)*N + (Zs > VSMALL ? halfT/Zs : vector::zero)
             );
-            const vector dtNew(Zs > VSMALL ? half : halfN*N);
+            const vector dtIncrement(Zs > VSMALL ? half : halfN*N);
             for (direction a = 0; a < 3; ++a)
             {
-                Gi[a] += dvNew[a]*N;
+                Gi[a] += dvIncrement[a]*N;
                 for (direction c = 0; c < 3; ++c)
                 {
-                    Gi[3 + 3*a + c] += (dtNew[a]*N[c])*N;
+                    Gi[3 + 3*a + c] += (dtIncrement[a]*N[c])*N;
                 }
             }
         }

@@ -362,6 +362,22 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     (
         dict_.subOrEmptyDict("scheme"), material_()
     );
+    {
+        // The F flux's upwind term is the acoustic one: with a shock
+        // impedance in the momentum flux the two do not belong to one
+        // Riemann solution (A3: plateau -98 instead of -75)
+        scalar Zp = 0, Zs = 0;
+        if (FStabilisation_ && !riemann_->constantImpedances(Zp, Zs))
+        {
+            const dictionary& scheme = dict_.subOrEmptyDict("scheme");
+            FatalIOErrorInFunction(scheme)
+                << "scheme/FStabilisation yes in " << dict_.name()
+                << " needs the acoustic interior Riemann solver, not '"
+                << riemann_->type() << "'." << nl
+                << "    Use riemannSolver acoustic, or FStabilisation no"
+                << exit(FatalIOError);
+        }
+    }
     createBoundaryConditions();
     symmetry_.reset(new symmetryConstraint(dual_, bcs_));
     planeStrain_.reset(new planeStrainTie(dual_, bcs_, dict_, name_));

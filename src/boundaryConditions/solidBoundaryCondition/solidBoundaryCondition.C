@@ -104,6 +104,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
 ) const
 {
     const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
+    const bool keepStates = tB.size();
     scalar power = 0;
 
     // Contact state of point k seen through the sub-face normal N
@@ -143,8 +144,11 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         Rp[i] += magA*tC;
         RF[i] += vC*sf.area[s];
         power += magA*pC;
-        tB[s] = tC;
-        vB[s] = vC;
+        if (keepStates)
+        {
+            tB[s] = tC;
+            vB[s] = vC;
+        }
     }
 
     return power;

@@ -954,6 +954,7 @@ Foam::scalar Foam::contactPair::addSideFluxes
     List<tensor>& RF = R.F;
     List<vector>& tB = R.boundaryTraction[side.patchi];
     List<vector>& vB = R.boundaryVelocity[side.patchi];
+    const bool keepStates = tB.size();
     R.boundarySet[side.patchi] = true;
 
     side.force = Zero;
@@ -978,8 +979,11 @@ Foam::scalar Foam::contactPair::addSideFluxes
         side.force[i] += magA*tC;
         RF[sf.point[s]] += vC*sf.area[s];
         power += magA*pC;
-        tB[s] = tC;
-        vB[s] = vC;
+        if (keepStates)
+        {
+            tB[s] = tC;
+            vB[s] = vC;
+        }
     }
     if (tractions)
     {

@@ -397,7 +397,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     P_.setSize(nPts);
     SigmaJ_.setSize(nPts);
     residual_.setSize(nPts, JLaw_);
-    residual_.setBoundarySize(dual_);
+    residual_.setBoundarySize(dual_, secondOrder_ && riemannBoundarySlope_);
     if (secondOrder_)
     {
         q_.setSize(nPts);
@@ -728,15 +728,16 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     };
 
     // Energy stability blends the interior residuals only: set the
-    // boundary and contact ones (added before) aside
-    List<vector> boundaryMomentum;
-    List<tensor> boundaryF;
+    // boundary and contact ones (added before) aside, swapped with the
+    // zeroed workspace
     if (energyStability_.valid())
     {
-        boundaryMomentum.transfer(residual_.momentum);
-        boundaryF.transfer(residual_.F);
-        residual_.momentum.setSize(boundaryMomentum.size(), Zero);
-        residual_.F.setSize(boundaryF.size(), Zero);
+        asideMomentum_.setSize(residual_.momentum.size());
+        asideF_.setSize(residual_.F.size());
+        asideMomentum_ = Zero;
+        asideF_ = Zero;
+        asideMomentum_.swap(residual_.momentum);
+        asideF_.swap(residual_.F);
     }
 
     // Interior fluxes: one pass over the edges
@@ -799,10 +800,10 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             ++nEnergyLimited_;
             minEnergyTheta_ = min(minEnergyTheta_, theta);
         }
-        forAll(boundaryMomentum, i)
+        forAll(asideMomentum_, i)
         {
-            residual_.momentum[i] += boundaryMomentum[i];
-            residual_.F[i] += boundaryF[i];
+            residual_.momentum[i] += asideMomentum_[i];
+            residual_.F[i] += asideF_[i];
         }
     }
 

@@ -16,7 +16,11 @@ void Foam::stageResidual::setSize(const label nPoints, const bool JLaw)
 }
 
 
-void Foam::stageResidual::setBoundarySize(const dualMesh& dual)
+void Foam::stageResidual::setBoundarySize
+(
+    const dualMesh& dual,
+    const bool keep
+)
 {
     const label nPatches = dual.mesh().boundaryMesh().size();
     boundaryTraction.setSize(nPatches);
@@ -24,7 +28,7 @@ void Foam::stageResidual::setBoundarySize(const dualMesh& dual)
     boundarySet.setSize(nPatches, false);
     forAll(boundaryTraction, patchi)
     {
-        const label n = dual.subFaces(patchi).point.size();
+        const label n = keep ? dual.subFaces(patchi).point.size() : 0;
         boundaryTraction[patchi].setSize(n);
         boundaryVelocity[patchi].setSize(n);
     }

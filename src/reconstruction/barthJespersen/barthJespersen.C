@@ -133,15 +133,18 @@ void Foam::limiters::barthJespersen::limitPoints
             const label e = pointEdges[k];
             const label j = es[e] + ee[e] - i;
             const vector halfdX(0.5*(X[j] - Xi));
+            fluxState d;
+            gradientIncrements(g, halfdX, d);
+            #pragma GCC unroll 1
             for (direction c = 0; c < nFluxComponents; ++c)
             {
-                const scalar d = g[c] & halfdX;
-                dHi[c] = max(dHi[c], d);
-                dLo[c] = min(dLo[c], d);
+                dHi[c] = max(dHi[c], d[c]);
+                dLo[c] = min(dLo[c], d[c]);
             }
             if (ownBounds)
             {
                 const fluxState& qj = q[j];
+                #pragma GCC unroll 1
                 for (direction c = 0; c < nFluxComponents; ++c)
                 {
                     lo[c] = min(lo[c], qj[c]);
@@ -171,10 +174,7 @@ void Foam::limiters::barthJespersen::limitPoints
         }
         if (serial)
         {
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                g[c] *= phi[c];
-            }
+            scaleGradient(g, phi);
         }
         else
         {
@@ -192,10 +192,7 @@ void Foam::limiters::barthJespersen::limitPoints
         );
         forAll(G, i)
         {
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                G[i][c] *= phi_[i][c];
-            }
+            scaleGradient(G[i], phi_[i]);
         }
     }
 }

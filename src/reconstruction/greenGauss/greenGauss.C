@@ -105,13 +105,18 @@ void boundarySlopes
             }
 
             // Derivatives along N of v and of t = P N
-            const vector dv(Gi[0] & N, Gi[1] & N, Gi[2] & N);
+            const vector dv
+            (
+                gradientOf(Gi, 0) & N,
+                gradientOf(Gi, 1) & N,
+                gradientOf(Gi, 2) & N
+            );
             vector dt(Zero);
             for (direction a = 0; a < 3; ++a)
             {
                 for (direction c = 0; c < 3; ++c)
                 {
-                    dt[a] += (Gi[3 + 3*a + c] & N)*N[c];
+                    dt[a] += (gradientOf(Gi, 3 + 3*a + c) & N)*N[c];
                 }
             }
             const scalar dvN = dv & N;
@@ -129,10 +134,10 @@ void boundarySlopes
             const vector dtIncrement(Zs > VSMALL ? half : halfN*N);
             for (direction a = 0; a < 3; ++a)
             {
-                Gi[a] += dvIncrement[a]*N;
+                addGradient(Gi, a, dvIncrement[a]*N);
                 for (direction c = 0; c < 3; ++c)
                 {
-                    Gi[3 + 3*a + c] += (dtIncrement[a]*N[c])*N;
+                    addGradient(Gi, 3 + 3*a + c, (dtIncrement[a]*N[c])*N);
                 }
             }
         }
@@ -165,7 +170,7 @@ void gradientAndBounds
     const polyBoundaryMesh& patches = dual.mesh().boundaryMesh();
 
     fluxStateGradient zero;
-    zero = vector::zero;
+    zero = 0.0;
     G = zero;
     if (Bounds)
     {
@@ -177,22 +182,30 @@ void gradientAndBounds
     {
         const label i = es[e], j = ee[e];
         const vector C(0.5*Ae[e]*Ne[e]);
-        const fluxState& qi = q[i];
-        const fluxState& qj = q[j];
-        fluxStateGradient& Gi = G[i];
-        fluxStateGradient& Gj = G[j];
-        for (direction c = 0; c < nFluxComponents; ++c)
+        const scalar Cx = C.x(), Cy = C.y(), Cz = C.z();
+        const scalar* __restrict__ qi = q[i].cdata();
+        const scalar* __restrict__ qj = q[j].cdata();
+        // (i != j: the two gradients never alias)
+        scalar* __restrict__ Gi = G[i].data();
+        scalar* __restrict__ Gj = G[j].data();
+        const direction n = nFluxComponents;
+        for (direction c = 0; c < n; ++c)
         {
-            const vector flux((qi[c] + qj[c])*C);
-            Gi[c] += flux;
-            Gj[c] -= flux;
+            const scalar f = qi[c] + qj[c];
+            const scalar fx = f*Cx, fy = f*Cy, fz = f*Cz;
+            Gi[c] += fx;
+            Gi[n + c] += fy;
+            Gi[2*n + c] += fz;
+            Gj[c] -= fx;
+            Gj[n + c] -= fy;
+            Gj[2*n + c] -= fz;
         }
         if (Bounds)
         {
-            fluxStateMinEqOp()(qMin[i], qj);
-            fluxStateMaxEqOp()(qMax[i], qj);
-            fluxStateMinEqOp()(qMin[j], qi);
-            fluxStateMaxEqOp()(qMax[j], qi);
+            fluxStateMinEqOp()(qMin[i], q[j]);
+            fluxStateMaxEqOp()(qMax[i], q[j]);
+            fluxStateMinEqOp()(qMin[j], q[i]);
+            fluxStateMaxEqOp()(qMax[j], q[i]);
         }
     }
 
@@ -209,8 +222,11 @@ void gradientAndBounds
             const fluxState& qn = q[sf.next[s]];
             for (direction c = 0; c < nFluxComponents; ++c)
             {
-                G[i][c] +=
-                    (qi[c] + w*(qp[c] + qn[c] - 2*qi[c]))*sf.area[s];
+                addGradient
+                (
+                    G[i], c,
+                    (qi[c] + w*(qp[c] + qn[c] - 2*qi[c]))*sf.area[s]
+                );
             }
         }
     }
@@ -235,9 +251,9 @@ void gradientAndBounds
     forAll(G, i)
     {
         const scalar invV = 1.0/V[i];
-        for (direction c = 0; c < nFluxComponents; ++c)
+        for (scalar& g : G[i])
         {
-            G[i][c] *= invV;
+            g *= invV;
         }
     }
 }

@@ -61,12 +61,14 @@ int main(int argc, char *argv[])
         {
             for (direction c = 0; c < nFluxComponents; ++c)
             {
-                const scalar g2 = magSqr(Gu[i][c]);
-                phi[i][c] = g2 > 0 ? (Gl[i][c] & Gu[i][c])/g2 : 1.0;
+                const vector gu(gradientOf(Gu[i], c));
+                const vector gl(gradientOf(Gl[i], c));
+                const scalar g2 = magSqr(gu);
+                phi[i][c] = g2 > 0 ? (gl & gu)/g2 : 1.0;
                 misfit = max
                 (
                     misfit,
-                    mag(Gl[i][c] - phi[i][c]*Gu[i][c])/(mag(Gu[i][c]) + VSMALL)
+                    mag(gl - phi[i][c]*gu)/(mag(gu) + VSMALL)
                 );
             }
         }
@@ -157,8 +159,8 @@ int main(int argc, char *argv[])
             const vector halfdX(0.5*(X[j] - X[i]));
             for (direction c = 0; c < nFluxComponents; ++c)
             {
-                const scalar fL = q[i][c] + (G[i][c] & halfdX);
-                const scalar fR = q[j][c] - (G[j][c] & halfdX);
+                const scalar fL = q[i][c] + (gradientOf(G[i], c) & halfdX);
+                const scalar fR = q[j][c] - (gradientOf(G[j], c) & halfdX);
                 overshoot = max(overshoot, fL - qMax[i][c]);
                 overshoot = max(overshoot, qMin[i][c] - fL);
                 overshoot = max(overshoot, fR - qMax[j][c]);
@@ -193,7 +195,10 @@ int main(int argc, char *argv[])
         {
             for (direction c = 0; c < nFluxComponents; ++c)
             {
-                diff = max(diff, mag(G2[i][c] - G[i][c]));
+                diff = max
+                (
+                    diff, mag(gradientOf(G2[i], c) - gradientOf(G[i], c))
+                );
             }
         }
         const bool same = diff == 0;
@@ -274,8 +279,8 @@ int main(int argc, char *argv[])
             errVA += mag(qL[0] - exact) + mag(qR[0] - exact);
             errBJ += mag(qLb[0] - exact) + mag(qRb[0] - exact);
             errNone +=
-                mag(q[i][0] + (G[i][0] & halfdX) - exact)
-              + mag(q[j][0] - (G[j][0] & halfdX) - exact);
+                mag(q[i][0] + (gradientOf(G[i], 0) & halfdX) - exact)
+              + mag(q[j][0] - (gradientOf(G[j], 0) & halfdX) - exact);
             errFirst += mag(q[i][0] - exact) + mag(q[j][0] - exact);
         }
         const scalar n = 2*es.size();

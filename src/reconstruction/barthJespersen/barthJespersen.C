@@ -23,72 +23,66 @@ void Foam::limiters::barthJespersen::limit
     List<fluxStateGradient>& G
 ) const
 {
-    // The point loop finds the extrema itself (serial)
-    limitPoints<false>(dual, q, G, qMin_, qMax_);
-}
-
-
-void Foam::limiters::barthJespersen::limit
-(
-    const dualMesh& dual,
-    const UList<fluxState>& q,
-    List<fluxStateGradient>& G,
-    List<fluxState>& qMin,
-    List<fluxState>& qMax
-) const
-{
-    limitPoints<true>(dual, q, G, qMin, qMax);
-}
-
-
-template<bool GivenBounds>
-void Foam::limiters::barthJespersen::limitPoints
-(
-    const dualMesh& dual,
-    const UList<fluxState>& q,
-    List<fluxStateGradient>& G,
-    List<fluxState>& qMin,
-    List<fluxState>& qMax
-) const
-{
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
     const labelList& pointEdgeStart = dual.pointEdgeStart();
     const labelList& pointEdges = dual.pointEdges();
     const pointField& X = dual.mesh().points();
     const label nPts = q.size();
-    const bool serial = !Pstream::parRun();
+    const bool parallel = Pstream::parRun();
 
-    if (!GivenBounds && !serial)
+    // The extrema of q over point i and its edge neighbours on this
+    // processor
+    auto localBounds = [&](const label i, fluxState& lo, fluxState& hi)
     {
-        // Extrema over the processor's edges, completed below
-        qMin = q;
-        qMax = q;
-        forAll(es, e)
+        lo = q[i];
+        hi = q[i];
+        for (label k = pointEdgeStart[i]; k < pointEdgeStart[i + 1]; ++k)
         {
-            const label i = es[e], j = ee[e];
-            fluxStateMinEqOp()(qMin[i], q[j]);
-            fluxStateMaxEqOp()(qMax[i], q[j]);
-            fluxStateMinEqOp()(qMin[j], q[i]);
-            fluxStateMaxEqOp()(qMax[j], q[i]);
+            const label e = pointEdges[k];
+            const fluxState& qj = q[es[e] + ee[e] - i];
+            #pragma GCC unroll 1
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                lo[c] = min(lo[c], qj[c]);
+                hi[c] = max(hi[c], qj[c]);
+            }
         }
-    }
-    // In serial without given extrema the point loop finds them itself
-    const bool ownBounds = !GivenBounds && serial;
+    };
 
-    if (!serial)
+    // Points on processor boundaries have neighbours on other processors:
+    // complete their extrema first (only these points are exchanged)
+    const labelList* shared = nullptr;
+    if (parallel)
     {
+        shared = &dual.mesh().globalData().coupledPatch().meshPoints();
+        if (sharedIndex_.size() != nPts)
+        {
+            sharedIndex_.setSize(nPts);
+            sharedIndex_ = -1;
+            forAll(*shared, s)
+            {
+                sharedIndex_[(*shared)[s]] = s;
+            }
+        }
+        const label nShared = shared->size();
+        sharedMin_.setSize(nShared);
+        sharedMax_.setSize(nShared);
+        sharedPhi_.setSize(nShared);
+        forAll(*shared, s)
+        {
+            localBounds((*shared)[s], sharedMin_[s], sharedMax_[s]);
+        }
         fluxState big; big = GREAT;
         fluxState small; small = -GREAT;
         syncTools::syncPointList
         (
-            dual.mesh(), qMin, fluxStateMinEqOp(), big
+            dual.mesh(), *shared, sharedMin_, fluxStateMinEqOp(), big
         );
         syncTools::syncPointList
         (
-            dual.mesh(), qMax, fluxStateMaxEqOp(), small
+            dual.mesh(), *shared, sharedMax_, fluxStateMaxEqOp(), small
         );
-        phi_.setSize(nPts);
     }
 
     // Body-wide magnitudes: velocity components share one, stress
@@ -125,6 +119,7 @@ void Foam::limiters::barthJespersen::limitPoints
         fluxStateGradient& g = G[i];
         const point& Xi = X[i];
         const fluxState& qi = q[i];
+        const label s = parallel ? sharedIndex_[i] : -1;
         fluxState dHi, dLo, lo(qi), hi(qi);
         dHi = 0.0;
         dLo = 0.0;
@@ -141,8 +136,9 @@ void Foam::limiters::barthJespersen::limitPoints
                 dHi[c] = max(dHi[c], d[c]);
                 dLo[c] = min(dLo[c], d[c]);
             }
-            if (ownBounds)
+            if (s < 0)
             {
+                // (the extrema from the neighbour values on the way)
                 const fluxState& qj = q[j];
                 #pragma GCC unroll 1
                 for (direction c = 0; c < nFluxComponents; ++c)
@@ -152,10 +148,10 @@ void Foam::limiters::barthJespersen::limitPoints
                 }
             }
         }
-        if (!ownBounds)
+        if (s >= 0)
         {
-            lo = qMin[i];
-            hi = qMax[i];
+            lo = sharedMin_[s];
+            hi = sharedMax_[s];
         }
 
         fluxState phi;
@@ -172,27 +168,28 @@ void Foam::limiters::barthJespersen::limitPoints
             }
             phi[c] = p;
         }
-        if (serial)
+        if (s < 0)
         {
             scaleGradient(g, phi);
         }
         else
         {
-            phi_[i] = phi;
+            sharedPhi_[s] = phi;
         }
     }
 
-    if (!serial)
+    if (parallel)
     {
-        // A shared point's Phi is the smallest over all its edges
+        // A shared point's Phi is the smallest over all its edges, on
+        // every processor
         fluxState one; one = 1.0;
         syncTools::syncPointList
         (
-            dual.mesh(), phi_, fluxStateMinEqOp(), one
+            dual.mesh(), *shared, sharedPhi_, fluxStateMinEqOp(), one
         );
-        forAll(G, i)
+        forAll(*shared, s)
         {
-            scaleGradient(G[i], phi_[i]);
+            scaleGradient(G[(*shared)[s]], sharedPhi_[s]);
         }
     }
 }

@@ -145,16 +145,12 @@ void boundarySlopes
 }
 
 
-// One pass over the edges: the Green-Gauss sums and, when Bounds, the
-// neighbourhood extrema (the limiter's pass over the same data)
-template<bool Bounds>
-void gradientAndBounds
+// One pass over the edges: the Green-Gauss sums
+void gradient
 (
     const Foam::dualMesh& dual,
     const Foam::UList<Foam::fluxState>& q,
     Foam::List<Foam::fluxStateGradient>& G,
-    Foam::List<Foam::fluxState>& qMin,
-    Foam::List<Foam::fluxState>& qMax,
     const Foam::stageResidual* R,
     const Foam::scalar Zp,
     const Foam::scalar Zs
@@ -172,11 +168,6 @@ void gradientAndBounds
     fluxStateGradient zero;
     zero = 0.0;
     G = zero;
-    if (Bounds)
-    {
-        qMin = q;
-        qMax = q;
-    }
 
     forAll(es, e)
     {
@@ -199,13 +190,6 @@ void gradientAndBounds
             Gj[c] -= fx;
             Gj[n + c] -= fy;
             Gj[2*n + c] -= fz;
-        }
-        if (Bounds)
-        {
-            fluxStateMinEqOp()(qMin[i], q[j]);
-            fluxStateMaxEqOp()(qMax[i], q[j]);
-            fluxStateMinEqOp()(qMin[j], q[i]);
-            fluxStateMaxEqOp()(qMax[j], q[i]);
         }
     }
 
@@ -271,24 +255,7 @@ void Foam::greenGaussGradient
     const scalar Zs
 )
 {
-    List<fluxState> unused;
-    gradientAndBounds<false>(dual, q, G, unused, unused, R, Zp, Zs);
-}
-
-
-void Foam::greenGaussGradient
-(
-    const dualMesh& dual,
-    const UList<fluxState>& q,
-    List<fluxStateGradient>& G,
-    List<fluxState>& qMin,
-    List<fluxState>& qMax,
-    const stageResidual* R,
-    const scalar Zp,
-    const scalar Zs
-)
-{
-    gradientAndBounds<true>(dual, q, G, qMin, qMax, R, Zp, Zs);
+    gradient(dual, q, G, R, Zp, Zs);
 }
 
 

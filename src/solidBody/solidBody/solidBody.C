@@ -402,11 +402,6 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     {
         q_.setSize(nPts);
         G_.setSize(nPts);
-        if (limiter_->usesBounds())
-        {
-            qMin_.setSize(nPts);
-            qMax_.setSize(nPts);
-        }
     }
     if (!updateConstitutive())
     {
@@ -647,26 +642,12 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         {
             packFluxState(v_[i], P_[i], SigmaJ_[i], q_[i]);
         }
-        if (limiter_->usesBounds())
-        {
-            // The neighbourhood extrema in the gradient's pass
-            greenGaussGradient
-            (
-                dual_, q_, G_, qMin_, qMax_,
-                riemannBoundarySlope_ ? &residual_ : nullptr,
-                material_->Zp(), material_->Zs()
-            );
-            limiter_->limit(dual_, q_, G_, qMin_, qMax_);
-        }
-        else
-        {
-            greenGaussGradient
-            (
-                dual_, q_, G_, riemannBoundarySlope_ ? &residual_ : nullptr,
-                material_->Zp(), material_->Zs()
-            );
-            limiter_->limit(dual_, q_, G_);
-        }
+        greenGaussGradient
+        (
+            dual_, q_, G_, riemannBoundarySlope_ ? &residual_ : nullptr,
+            material_->Zp(), material_->Zs()
+        );
+        limiter_->limit(dual_, q_, G_);
     }
 
     // One edge's upwind fluxes from its two midpoint states, added to the

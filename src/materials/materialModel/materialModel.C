@@ -44,6 +44,7 @@ Foam::materialModel::materialModel
     dict_(dict),
     rho_(readPositive(dict, "rho")),
     mu_(0),
+    tieModulus_(0),
     kappa_(0),
     hugoniot_(dict.found("hugoniot")),
     s_(0)
@@ -75,6 +76,8 @@ Foam::materialModel::materialModel
         kappa_ = readPositive(dict, "kappa");
         mu_ = readPositive(dict, "mu", true);
     }
+
+    tieModulus_ = max(mu_, 1e-3*kappa_);
 
     if (hugoniot_)
     {

@@ -107,7 +107,7 @@ Foam::stableTimeStep::stableTimeStep
 
     // J stabilisation: Omega dJ/dt gains sum_j S_ij (Sigma_J,j - Sigma_J,i)
     // with S_ij = |C|/(2 rho c_p) (undeformed) and dSigma_J/dJ = k = kappa
-    // + mu (the volumetric stiffness and the det F - J tie): a
+    // + tie (the volumetric stiffness and the det F - J tie): a
     // checkerboard of J decays at r = k S_int/(rho c_p V).  A small-strain
     // material takes its pressure from tr F, not from J: J is then carried
     // along without acting back, and sets no limit.  deltaT() evaluates the
@@ -118,7 +118,7 @@ Foam::stableTimeStep::stableTimeStep
     {
         sJ_.setSize(nPts);
     }
-    const scalar k = material.kappa() + material.mu();
+    const scalar k = material.kappa() + material.tieModulus();
     forAll(rMomentum_, i)
     {
         const scalar rJ =
@@ -159,7 +159,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
     const scalar shockFactor =
         hugoniot ? 1 + material_.hugoniotS()*vMax/cp : 1;
 
-    const scalar kRef = material_.kappa() + material_.mu();
+    const scalar kRef = material_.kappa() + material_.tieModulus();
     const scalar rhoCp2 = material_.rho()*sqr(cp);
     const scalarField& V = dual_.volumes();
 
@@ -223,7 +223,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
         if (!sJ_.empty())
         {
             const scalar k = (sqr(c)*rhoCp2 - 4.0/3.0*material_.mu()
-              + material_.mu())/kRef;
+              + material_.tieModulus())/kRef;
             r = max(r, max(k, 1.0)*kRef*JFactor*sJ_[i]/V[i]);
         }
         dt = min(dt, 2/max(r, VSMALL));

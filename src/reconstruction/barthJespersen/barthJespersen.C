@@ -41,12 +41,8 @@ void Foam::limiters::barthJespersen::limit
         {
             const label e = pointEdges[k];
             const fluxState& qj = q[es[e] + ee[e] - i];
-            #pragma GCC unroll 1
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                lo[c] = min(lo[c], qj[c]);
-                hi[c] = max(hi[c], qj[c]);
-            }
+            fluxStateMinEqOp()(lo, qj);
+            fluxStateMaxEqOp()(hi, qj);
         }
     };
 
@@ -139,13 +135,8 @@ void Foam::limiters::barthJespersen::limit
             if (s < 0)
             {
                 // (the extrema from the neighbour values on the way)
-                const fluxState& qj = q[j];
-                #pragma GCC unroll 1
-                for (direction c = 0; c < nFluxComponents; ++c)
-                {
-                    lo[c] = min(lo[c], qj[c]);
-                    hi[c] = max(hi[c], qj[c]);
-                }
+                fluxStateMinEqOp()(lo, q[j]);
+                fluxStateMaxEqOp()(hi, q[j]);
             }
         }
         if (s >= 0)

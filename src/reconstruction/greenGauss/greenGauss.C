@@ -144,20 +144,20 @@ void boundarySlopes
     }
 }
 
+} // End anonymous namespace
+
 
 // One pass over the edges: the Green-Gauss sums
-void gradient
+void Foam::greenGaussGradient
 (
-    const Foam::dualMesh& dual,
-    const Foam::UList<Foam::fluxState>& q,
-    Foam::List<Foam::fluxStateGradient>& G,
-    const Foam::stageResidual* R,
-    const Foam::scalar Zp,
-    const Foam::scalar Zs
+    const dualMesh& dual,
+    const UList<fluxState>& q,
+    List<fluxStateGradient>& G,
+    const stageResidual* R,
+    const scalar Zp,
+    const scalar Zs
 )
 {
-    using namespace Foam;
-
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
     const vectorField& Ne = dual.edgeNormals();
@@ -240,22 +240,6 @@ void gradient
             g *= invV;
         }
     }
-}
-
-} // End anonymous namespace
-
-
-void Foam::greenGaussGradient
-(
-    const dualMesh& dual,
-    const UList<fluxState>& q,
-    List<fluxStateGradient>& G,
-    const stageResidual* R,
-    const scalar Zp,
-    const scalar Zs
-)
-{
-    gradient(dual, q, G, R, Zp, Zs);
 }
 
 

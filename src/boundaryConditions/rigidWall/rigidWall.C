@@ -6,6 +6,7 @@
 #include "rigidWall.H"
 #include "checkedInput.H"
 #include "acousticFormulas.H"
+#include "hugoniot.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -29,8 +30,21 @@ Foam::solidBoundaryConditions::rigidWall::rigidWall
     point_(getFinite<point>(dict, "point")),
     normal_(getFinite<vector>(dict, "normal")),
     velocity_(getFiniteOrDefault<vector>(dict, "velocity", Zero)),
-    friction_(frictionLaw::New(dict, "patch '" + patchName() + "'"))
+    friction_(frictionLaw::New(dict, "patch '" + patchName() + "'")),
+    hugoniot_(true)
 {
+    const word solver(dict.getOrDefault<word>("riemannSolver", "hugoniot"));
+    if (solver == "acoustic")
+    {
+        hugoniot_ = false;
+    }
+    else if (solver != "hugoniot")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown riemannSolver '" << solver << "' for patch '"
+            << patchName() << "'" << nl
+            << "Valid solvers: (acoustic hugoniot)" << exit(FatalIOError);
+    }
     if (mag(normal_) < SMALL)
     {
         FatalIOErrorInFunction(dict)
@@ -48,8 +62,7 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
     const point& x,
     const vector& v,
     const vector& tL,
-    const scalar Zp,
-    const scalar Zs,
+    const waveData& w,
     const scalar t,
     vector& tC,
     vector& vC
@@ -61,13 +74,23 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
     // Contact normal: out of the body, into the wall
     const vector nc(-normal_);
     const scalar vWallN = velocity_ & nc;
-    const scalar tnTrial = (tL & nc) + Zp*(vWallN - (v & nc));
+
+    // Normal velocity jump from the body to the wall (negative when the
+    // body moves into it).  In compression the Hugoniot relation of the
+    // body's side, t^C = t + Zp dv - rho0 s Lambda dv^2 (doc/method.md,
+    // section 3), adds the shock term; an expansive jump is acoustic
+    const scalar dvn = vWallN - (v & nc);
+    const scalar shockTerm = contactRiemannSolvers::hugoniot::rigidShockTerm
+    (
+        dvn, hugoniot_ ? w.shockMass : scalar(0)
+    );
+    const scalar tnTrial = (tL & nc) + w.Zp*dvn - shockTerm;
 
     if (gap > 0 || tnTrial >= 0)
     {
         // Open gap or tension: traction-free
         tC = Zero;
-        vC = acousticFormulas::tractionVelocity(tL, v, tC, n, Zp, Zs);
+        vC = acousticFormulas::tractionVelocity(tL, v, tC, n, w.Zp, w.Zs);
         return;
     }
 
@@ -75,7 +98,8 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
     // whether it holds or the point slips with the traction it allows
     const vector tStick
     (
-        acousticFormulas::velocityTraction(tL, v, velocity_, nc, Zp, Zs)
+        acousticFormulas::velocityTraction(tL, v, velocity_, nc, w.Zp, w.Zs)
+      - shockTerm*nc
     );
     bool stick = false;
     const vector ttC
@@ -92,7 +116,8 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
     }
     else
     {
-        acousticFormulas::mixedState(tL, v, vWallN, ttC, nc, Zp, Zs, tC, vC);
+        acousticFormulas::mixedState(tL, v, vWallN, ttC, nc, w.Zp, w.Zs, tC, vC);
+        tC -= shockTerm*nc;
     }
 }
 
@@ -100,7 +125,9 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
 void Foam::solidBoundaryConditions::rigidWall::describe(Ostream& os) const
 {
     os  << "rigid wall at " << point_ << ", normal " << normal_
-        << ", velocity " << velocity_ << ", friction ";
+        << ", velocity " << velocity_ << ", riemannSolver "
+        << (hugoniot_ ? "hugoniot (the material's slope)" : "acoustic")
+        << ", friction ";
     friction_->describe(os);
 }
 

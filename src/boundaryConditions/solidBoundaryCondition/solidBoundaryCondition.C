@@ -94,8 +94,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     const UList<vector>& v,
     const UList<tensor>& P,
     const UList<tensor>& H,
-    const scalar Zp,
-    const scalar Zs,
+    const waveData& body,
     const scalar t,
     UList<vector>& Rp,
     UList<tensor>& RF,
@@ -111,8 +110,10 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     auto state = [&](const label k, const vector& N, vector& tC, vector& vC)
     {
         vector n(H[k] & N);
-        n /= mag(n);
-        contactState(n, N, x[k], v[k], P[k] & N, Zp, Zs, t, tC, vC);
+        const scalar Lambda = mag(n);
+        n /= Lambda;
+        const waveData w{body.Zp, body.Zs, body.shockMass*Lambda};
+        contactState(n, N, x[k], v[k], P[k] & N, w, t, tC, vC);
     };
 
     forAll(sf.point, s)

@@ -35,8 +35,7 @@ void Foam::solidBoundaryConditions::symmetry::contactState
     const point& x,
     const vector& v,
     const vector& tL,
-    const scalar Zp,
-    const scalar Zs,
+    const waveData& w,
     const scalar t,
     vector& tC,
     vector& vC
@@ -44,7 +43,7 @@ void Foam::solidBoundaryConditions::symmetry::contactState
 {
     // The plane's own normal (the reference one): the deformed normal may
     // tilt, and its normal reaction would then push along the plane
-    acousticFormulas::mixedState(tL, v, 0, Zero, N, Zp, Zs, tC, vC);
+    acousticFormulas::mixedState(tL, v, 0, Zero, N, w.Zp, w.Zs, tC, vC);
 }
 
 

@@ -48,15 +48,14 @@ void Foam::solidBoundaryConditions::traction::contactState
     const point& x,
     const vector& v,
     const vector& tL,
-    const scalar Zp,
-    const scalar Zs,
+    const waveData& w,
     const scalar t,
     vector& tC,
     vector& vC
 ) const
 {
     tC = traction_->value(t);
-    vC = acousticFormulas::tractionVelocity(tL, v, tC, n, Zp, Zs);
+    vC = acousticFormulas::tractionVelocity(tL, v, tC, n, w.Zp, w.Zs);
 }
 
 

@@ -40,15 +40,14 @@ void Foam::solidBoundaryConditions::velocity::contactState
     const point& x,
     const vector& v,
     const vector& tL,
-    const scalar Zp,
-    const scalar Zs,
+    const waveData& w,
     const scalar t,
     vector& tC,
     vector& vC
 ) const
 {
     vC = velocity_->value(t);
-    tC = acousticFormulas::velocityTraction(tL, v, vC, n, Zp, Zs);
+    tC = acousticFormulas::velocityTraction(tL, v, vC, n, w.Zp, w.Zs);
 }
 
 

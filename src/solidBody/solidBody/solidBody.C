@@ -794,14 +794,17 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
 void Foam::solidBody::addBoundaryFluxes(const scalar t)
 {
     const List<tensor>& H = Hc();
-    const scalar Zp = material_->Zp();
-    const scalar Zs = material_->Zs();
+    const materialModel& m = material_();
+    const solidBoundaryCondition::waveData body
+    {
+        m.Zp(), m.Zs(), m.hugoniot() ? m.rho()*m.hugoniotS() : 0
+    };
     for (const solidBoundaryCondition& bc : bcs_)
     {
         const label patchi = bc.patchi();
         residual_.power += bc.addFluxes
         (
-            x_, v_, P_, H, Zp, Zs, t, residual_.momentum, residual_.F,
+            x_, v_, P_, H, body, t, residual_.momentum, residual_.F,
             residual_.boundaryTraction[patchi],
             residual_.boundaryVelocity[patchi]
         );

@@ -13,6 +13,11 @@ Description
       - the Hugoniot check: two identical bars, c = 100, rho0 = 0.01,
         v0 = 100, s = 1: v^C = 50, t_n^C = -75; s -> 0 gives the acoustic
         answer; an expansive jump uses the acoustic solver;
+      - the Hugoniot rigid wall: a bar at 50 into a fixed wall gives the
+        check's -75 (the wall is the mirror plane of the two-bar check);
+        for any compressive state it equals the two-body solver against the
+        state's mirror image (v^C = 0 there); an expansive jump is
+        acoustic;
       - one-sided formulas: prescribed traction (free surface), prescribed
         velocity (rigid), symmetry (mixed), frictionless slip, Coulomb
         stick and slip on a rigid wall.
@@ -111,6 +116,32 @@ int main(int argc, char *argv[])
             t,
             -0.02*(100/Foam::sqrt(2.0))*v - 0.5*0.02*sqr(v)
         );
+    }
+
+    Info<< "Hugoniot rigid wall (rho 0.01, c 100, s 1)" << endl;
+    {
+        typedef contactRiemannSolvers::hugoniot hugoniot;
+        // Bar at 50 into a fixed wall: dv = 0 - 50, Zp = 1, m = rho s Lam
+        const scalar dv = -50, Zp = 0.01*100, m = 0.01*1*1;
+        check("bar at 50 on a wall: t_n^C", Zp*dv - hugoniot::rigidShockTerm(dv, m), -75);
+
+        // A general compressive state against its mirror image: the
+        // two-body solver gives v^C = 0 and the rigid-wall traction
+        const dictionary dict;
+        hugoniot solver(dict);
+        const scalar tn = -3, vn = 20, Lam = 1.2, s = 0.7;
+        side L{tn, vn, 0.01, 100, Lam, s}, R{tn, -vn, 0.01, 100, Lam, s};
+        scalar v, t;
+        solver.normalState(L, R, v, t);
+        const scalar mL = 0.01*s*Lam;
+        check("mirror image: v^C", v, 0);
+        check
+        (
+            "mirror image: t_n^C = rigid-wall traction",
+            t,
+            tn + Zp*(0 - vn) - hugoniot::rigidShockTerm(0 - vn, mL)
+        );
+        check("expansive jump: no shock term", hugoniot::rigidShockTerm(5, mL), 0);
     }
 
     Info<< "One-sided formulas, Zp = 2, Zs = 1, n = x" << endl;

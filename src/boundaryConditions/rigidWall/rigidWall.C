@@ -126,7 +126,7 @@ void Foam::solidBoundaryConditions::rigidWall::describe(Ostream& os) const
 {
     os  << "rigid wall at " << point_ << ", normal " << normal_
         << ", velocity " << velocity_ << ", riemannSolver "
-        << (hugoniot_ ? "hugoniot (the material's slope)" : "acoustic")
+        << (hugoniot_ ? "hugoniot (the material's slope; acoustic without one)" : "acoustic")
         << ", friction ";
     friction_->describe(os);
 }

@@ -13,6 +13,7 @@
 #include "syncTools.H"
 #include "tensorCross.H"
 #include "acousticFormulas.H"
+#include "interiorHugoniot.H"
 #include "greenGauss.H"
 #include "vector2D.H"
 #include "IFstream.H"
@@ -619,9 +620,8 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     const scalar vStabS =
         FStabilisation_ && material_->Zs() > VSMALL
       ? 0.5/material_->Zs() : 0;
-    const scalar shockMass =
-        FStabilisation_ && material_->hugoniot()
-      ? material_->rho()*material_->hugoniotS() : 0;
+    const scalar ZpBody = material_->Zp();
+    const scalar shockMass = FStabilisation_ ? material_->shockMass() : 0;
 
     if (secondOrder_)
     {
@@ -679,21 +679,17 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             dt *= w;
         }
         const scalar dtn = dt & n;
-        scalar vStabN = vStabP;
-        if (shockMass > 0)
-        {
-            // With the Hugoniot interior solver the normal impedance is the
-            // shock one in compression, as in its traction
-            // (interiorHugoniot::traction): F and momentum then follow one
-            // Riemann solution.  (With the acoustic impedance here the
-            // Mach 1 bar A3 reached -98 instead of -75.)
-            const scalar closing = (vL - vR) & n;
-            if (closing > 0)
-            {
-                vStabN =
-                    0.5/(material_->Zp() + shockMass*mag(hN)*closing);
-            }
-        }
+        // With a Hugoniot material the normal impedance is the shock one
+        // in compression, as in the traction: F and momentum then follow
+        // one Riemann solution.  (With the acoustic impedance here the
+        // Mach 1 bar A3 reached -98 instead of -75.)
+        const scalar vStabN =
+            shockMass > 0
+          ? 0.5/interiorRiemannSolvers::hugoniot::normalImpedance
+            (
+                ZpBody, shockMass, vL, vR, n, mag(hN)
+            )
+          : vStabP;
         const vector vC
         (
             0.5*(vL + vR) + (vStabN*dtn)*n + vStabS*(dt - dtn*n)
@@ -799,7 +795,7 @@ void Foam::solidBody::addBoundaryFluxes(const scalar t)
     const materialModel& m = material_();
     const solidBoundaryCondition::waveData body
     {
-        m.Zp(), m.Zs(), m.hugoniot() ? m.rho()*m.hugoniotS() : 0
+        m.Zp(), m.Zs(), m.shockMass()
     };
     for (const solidBoundaryCondition& bc : bcs_)
     {

@@ -1007,7 +1007,7 @@ Foam::contactPair::contactPair
 :
     name_(name),
     dict_(dict),
-    riemann_(contactRiemannSolver::New(dict)),
+    riemann_(),
     friction_(frictionLaw::New(dict, "contact pair '" + name + "'")),
     matchDirection_(getFiniteOrDefault<vector>(dict, "matchDirection", Zero)),
     useAMI_(false),
@@ -1073,6 +1073,7 @@ Foam::contactPair::contactPair
             << " (contact of a body with itself is not supported)."
             << exit(FatalIOError);
     }
+    chooseRiemannSolver(bodyA, bodyB);
     setSide(A_, bodyA, dict.get<word>("patchA"));
     setSide(B_, bodyB, dict.get<word>("patchB"));
 
@@ -1133,6 +1134,61 @@ Foam::contactPair::contactPair
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactPair::chooseRiemannSolver
+(
+    const solidBody& bodyA,
+    const solidBody& bodyB
+)
+{
+    const word given(dict_.getOrDefault<word>("riemannSolver", "auto"));
+    word type(given);
+    if (given != "auto")
+    {
+        riemannChoice_ = "given";
+    }
+    else
+    {
+        // The impact Mach number M = |[[v]]|/c (doc/method.md, section 3):
+        // the Hugoniot contact stress of two like bodies is the acoustic
+        // one times (1 + s M/2), so below M = 0.01 the acoustic solver is
+        // exact to a fraction of a percent; towards 1 the Hugoniot changes
+        // shock speed and separation time substantially
+        const materialModel& mA = bodyA.material();
+        const materialModel& mB = bodyB.material();
+        const scalar M =
+            mag(bodyA.initialVelocity() - bodyB.initialVelocity())
+           /min(mA.cp(), mB.cp());
+        OStringStream reason;
+        if (!mA.hugoniot() && !mB.hugoniot())
+        {
+            type = "acoustic";
+            reason << "auto: neither material has a Hugoniot";
+        }
+        else if (bodyA.driven() || bodyB.driven())
+        {
+            type = "hugoniot";
+            reason << "auto: a Hugoniot material, and a driven body (the"
+                << " initial velocities do not bound the impact speed)";
+        }
+        else if (M >= 0.01)
+        {
+            type = "hugoniot";
+            reason << "auto: a Hugoniot material at impact Mach number "
+                << M << " >= 0.01";
+        }
+        else
+        {
+            type = "acoustic";
+            reason << "auto: impact Mach number " << M << " < 0.01, where"
+                << " the acoustic contact stress is within s M/2 of the"
+                << " Hugoniot one";
+        }
+        riemannChoice_ = reason.str();
+    }
+    riemann_ = contactRiemannSolver::New(dict_, type);
+}
+
 
 void Foam::contactPair::write() const
 {
@@ -1507,7 +1563,7 @@ void Foam::contactPair::describe(Ostream& os) const
         os  << " (s " << (mA.hugoniot() ? mA.hugoniotS() : 0) << " / "
             << (mB.hugoniot() ? mB.hugoniotS() : 0) << ")";
     }
-    os  << ", friction ";
+    os  << " (" << riemannChoice_.c_str() << "), friction ";
     friction_->describe(os);
     if (useAMI_)
     {

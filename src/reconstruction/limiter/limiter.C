@@ -24,7 +24,7 @@ Foam::autoPtr<Foam::limiter> Foam::limiter::New
     {
         FatalIOErrorInFunction(dict)
             << "Unknown limiter '" << type << "' (keyword 'limiter')" << nl
-            << "Valid limiters: "
+            << "Valid limiters: auto (chosen from the material) or "
             << flatOutput(dictionaryConstructorTablePtr_->sortedToc())
             << exit(FatalIOError);
     }

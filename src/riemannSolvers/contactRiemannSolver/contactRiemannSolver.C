@@ -14,18 +14,18 @@ namespace Foam
 
 Foam::autoPtr<Foam::contactRiemannSolver> Foam::contactRiemannSolver::New
 (
-    const dictionary& dict
+    const dictionary& dict,
+    const word& type
 )
 {
-    const word type(dict.getOrDefault<word>("riemannSolver", "acoustic"));
-
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(type);
 
     if (!cstrIter.found())
     {
         FatalIOErrorInFunction(dict)
             << "Unknown riemannSolver '" << type << "'" << nl
-            << "Valid Riemann solvers: "
+            << "Valid Riemann solvers: auto (chosen per pair from the"
+            << " materials and the impact Mach number) or "
             << flatOutput(dictionaryConstructorTablePtr_->sortedToc())
             << exit(FatalIOError);
     }

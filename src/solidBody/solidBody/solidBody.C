@@ -30,55 +30,21 @@ void Foam::solidBody::readScheme()
          "planeStrain", "boundaryConditions", "probes"}
     );
 
-    const dictionary& scheme = dict_.subOrEmptyDict("scheme");
-    checkKeywords
-    (
-        scheme,
-        {
-            "secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw",
-            "energyStable", "riemannSolver", "FStabilisation",
-            "boundarySlope"
-        }
-    );
-
-    JLaw_ = scheme.getOrDefault<Switch>("JLaw", true);
-    HLaw_ = scheme.getOrDefault<Switch>("HLaw", false);
-    secondOrder_ = scheme.getOrDefault<Switch>("secondOrder", true);
-    // Off by default: with the upwind velocity in F bending with large
-    // rotation loses most of its energy (the ring tutorial; doc/method.md,
-    // section 8)
-    FStabilisation_ = scheme.getOrDefault<Switch>("FStabilisation", false);
-    {
-        const word slope
-        (
-            scheme.getOrDefault<word>("boundarySlope", "interior")
-        );
-        if (slope != "interior" && slope != "riemann")
-        {
-            FatalIOErrorInFunction(scheme)
-                << "scheme/boundarySlope '" << slope << "' in "
-                << scheme.name() << " is not allowed." << nl
-                << "    Valid: interior (Green-Gauss, the default) or"
-                << " riemann (the incoming waves' slope from the boundary's"
-                << " Riemann states)" << exit(FatalIOError);
-        }
-        riemannBoundarySlope_ = (slope == "riemann");
-    }
-    // Off by default: its one blending factor per body lowers the order of
-    // the whole body where one place produces energy, which costs the 1D
-    // wall reflection 0.9 % of its plateau accuracy (doc/design.md)
-    if (secondOrder_ && scheme.getOrDefault<Switch>("energyStable", false))
+    // Each switch given in the scheme dictionary or chosen from the
+    // material (bodyScheme.H)
+    scheme_.reset(new bodyScheme(dict_, material_()));
+    JLaw_ = scheme_->JLaw();
+    HLaw_ = scheme_->HLaw();
+    secondOrder_ = scheme_->secondOrder();
+    FStabilisation_ = scheme_->FStabilisation();
+    riemannBoundarySlope_ = secondOrder_ && scheme_->riemannBoundarySlope();
+    if (secondOrder_ && scheme_->energyStable())
     {
         energyStability_.reset(new energyStability(dual_, JLaw_));
     }
-
     if (secondOrder_)
     {
-        limiter_ = limiter::New
-        (
-            scheme.getOrDefault<word>("limiter", "barthJespersen"),
-            scheme
-        );
+        limiter_ = limiter::New(scheme_->limiter(), scheme_->dict());
     }
 }
 
@@ -357,12 +323,9 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     mesh_.clearAddressing();
     checkDecomposition();
 
-    readScheme();
     material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
-    riemann_ = interiorRiemannSolver::New
-    (
-        dict_.subOrEmptyDict("scheme"), material_()
-    );
+    readScheme();
+    riemann_ = interiorRiemannSolver::New(scheme_->dict(), material_());
     createBoundaryConditions();
     symmetry_.reset(new symmetryConstraint(dual_, bcs_));
     planeStrain_.reset(new planeStrainTie(dual_, bcs_, dict_, name_));
@@ -406,6 +369,17 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
 Foam::label Foam::solidBody::nGlobalPoints() const
 {
     return label(dual_.sumPoints(scalarField(mesh_.nPoints(), 1.0)) + 0.5);
+}
+
+
+bool Foam::solidBody::driven() const
+{
+    bool driven = magSqr(bodyForce_) > 0;
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        driven = driven || bc.drives();
+    }
+    return driven;
 }
 
 
@@ -1036,9 +1010,12 @@ void Foam::solidBody::describe(Ostream& os) const
     {
         os  << "first order (Godunov)";
     }
-    os  << (FStabilisation_ ? ", upwind F flux" : "") << ", Riemann solver ";
+    os  << (FStabilisation_ ? ", upwind F flux" : "")
+        << (energyStability_.valid() ? ", energy stable" : "")
+        << ", Riemann solver ";
     riemann_->describe(os);
     os  << nl;
+    scheme_->describe(os, "        ");
     if (returnReduce(planeStrain_->size(), sumOp<label>()))
     {
         os  << "    plane strain: both copies of "

@@ -16,22 +16,17 @@ namespace Foam
 Foam::autoPtr<Foam::interiorRiemannSolver> Foam::interiorRiemannSolver::New
 (
     const dictionary& schemeDict,
+    const word& type,
     const materialModel& material
 )
 {
-    const word type
-    (
-        schemeDict.getOrDefault<word>
-        (
-            "riemannSolver", material.hugoniot() ? "hugoniot" : "acoustic"
-        )
-    );
     auto cstrIter = materialConstructorTablePtr_->cfind(type);
     if (!cstrIter.found())
     {
         FatalIOErrorInFunction(schemeDict)
             << "Unknown riemannSolver '" << type << "' in the scheme" << nl
-            << "Valid solvers: "
+            << "Valid solvers: auto (the material's: hugoniot for a material"
+            << " with a Hugoniot, else acoustic) or "
             << flatOutput(materialConstructorTablePtr_->sortedToc())
             << exit(FatalIOError);
     }

@@ -145,6 +145,16 @@ Foam::bodyScheme::bodyScheme
     );
     HLaw_ = choose("HLaw", false, "H = cof F is exact and stores nothing");
 
+    // (the list of solvers is checked by interiorRiemannSolver::New)
+    riemannSolver_ = choose
+    (
+        "riemannSolver", wordList(),
+        m.hugoniot() ? "hugoniot" : "acoustic",
+        m.hugoniot()
+      ? string("the material's Hugoniot sets the interior shock relation")
+      : string("the material has no Hugoniot")
+    );
+
     // With the upwind F flux off, bending keeps its energy (its traction
     // jump term damps bending with large rotation on coarse meshes)
     FStabilisation_ = choose

@@ -325,7 +325,10 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
 
     material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
     readScheme();
-    riemann_ = interiorRiemannSolver::New(scheme_->dict(), material_());
+    riemann_ = interiorRiemannSolver::New
+    (
+        scheme_->dict(), scheme_->riemannSolver(), material_()
+    );
     createBoundaryConditions();
     symmetry_.reset(new symmetryConstraint(dual_, bcs_));
     planeStrain_.reset(new planeStrainTie(dual_, bcs_, dict_, name_));

@@ -58,6 +58,25 @@ Foam::Switch Foam::bodyScheme::choose
 }
 
 
+Foam::word Foam::bodyScheme::given
+(
+    const word& key,
+    const wordList& allowed
+) const
+{
+    const word value(dict_.get<word>(key));
+    if (!allowed.empty() && !allowed.found(value))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "scheme/" << key << " '" << value << "' in " << dict_.name()
+            << " is not allowed." << nl
+            << "    Valid: auto or " << flatOutput(allowed)
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
 Foam::word Foam::bodyScheme::choose
 (
     const word& key,
@@ -71,15 +90,7 @@ Foam::word Foam::bodyScheme::choose
         note(key, autoValue, "auto: " + why);
         return autoValue;
     }
-    const word value(dict_.get<word>(key));
-    if (!allowed.empty() && !allowed.found(value))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "scheme/" << key << " '" << value << "' in " << dict_.name()
-            << " is not allowed." << nl
-            << "    Valid: auto or " << flatOutput(allowed)
-            << exit(FatalIOError);
-    }
+    const word value(given(key, allowed));
     note(key, value, "given");
     return value;
 }
@@ -163,8 +174,14 @@ Foam::bodyScheme::bodyScheme
         "it damps bending with large rotation; 'yes' for planar impacts"
     );
 
+    const wordList boundarySlopes({"interior", "riemann"});
     if (!secondOrder_)
     {
+        // (a given boundarySlope is still checked: a typo is an error)
+        if (!automatic("boundarySlope"))
+        {
+            given("boundarySlope", boundarySlopes);
+        }
         limiter_ = "none";
         energyStable_ = false;
         boundarySlope_ = "interior";
@@ -208,7 +225,7 @@ Foam::bodyScheme::bodyScheme
 
     boundarySlope_ = choose
     (
-        "boundarySlope", {"interior", "riemann"},
+        "boundarySlope", boundarySlopes,
         FStabilisation_ ? "riemann" : "interior",
         FStabilisation_
       ? "the incoming waves' slope goes with the upwind F flux"

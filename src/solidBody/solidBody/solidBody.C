@@ -33,16 +33,11 @@ void Foam::solidBody::readScheme()
     // Each switch given in the scheme dictionary or chosen from the
     // material (bodyScheme.H)
     scheme_.reset(new bodyScheme(dict_, material_()));
-    JLaw_ = scheme_->JLaw();
-    HLaw_ = scheme_->HLaw();
-    secondOrder_ = scheme_->secondOrder();
-    FStabilisation_ = scheme_->FStabilisation();
-    riemannBoundarySlope_ = secondOrder_ && scheme_->riemannBoundarySlope();
-    if (secondOrder_ && scheme_->energyStable())
+    if (scheme_->energyStable())
     {
-        energyStability_.reset(new energyStability(dual_, JLaw_));
+        energyStability_.reset(new energyStability(dual_, scheme_->JLaw()));
     }
-    if (secondOrder_)
+    if (scheme_->secondOrder())
     {
         limiter_ = limiter::New(scheme_->limiter(), scheme_->dict());
     }
@@ -194,7 +189,7 @@ void Foam::solidBody::readState()
     readPointFieldIfPresent(mesh_, "u", u_, restart);
     readPointFieldIfPresent(mesh_, "F", F_, restart);
 
-    if (HLaw_)
+    if (scheme_->HLaw())
     {
         H_.setSize(nPts);
         if (!readPointFieldIfPresent(mesh_, "H", H_, restart))
@@ -210,7 +205,7 @@ void Foam::solidBody::readState()
         Hc_.setSize(nPts);
     }
 
-    if (JLaw_)
+    if (scheme_->JLaw())
     {
         J_.setSize(nPts);
         if (!readPointFieldIfPresent(mesh_, "J", J_, restart))
@@ -295,9 +290,6 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
         )
     ),
     material_(),
-    JLaw_(true),
-    HLaw_(false),
-    secondOrder_(true),
     limiter_(),
     riemann_(),
     nEnergyLimited_(0),
@@ -334,7 +326,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     planeStrain_.reset(new planeStrainTie(dual_, bcs_, dict_, name_));
     stableStep_.reset
     (
-        new stableTimeStep(dual_, material_(), bcs_, JLaw_)
+        new stableTimeStep(dual_, material_(), bcs_, scheme_->JLaw())
     );
     readState();
     if (material_->plastic())
@@ -347,9 +339,9 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     x_.setSize(nPts);
     P_.setSize(nPts);
     SigmaJ_.setSize(nPts);
-    residual_.setSize(nPts, JLaw_);
-    residual_.setBoundarySize(dual_, secondOrder_ && riemannBoundarySlope_);
-    if (secondOrder_)
+    residual_.setSize(nPts, scheme_->JLaw());
+    residual_.setBoundarySize(dual_, scheme_->riemannBoundarySlope());
+    if (scheme_->secondOrder())
     {
         q_.setSize(nPts);
         G_.setSize(nPts);
@@ -404,8 +396,8 @@ void Foam::solidBody::storeState()
     lm0_ = lm_;
     u0_ = u_;
     F0_ = F_;
-    if (HLaw_) H0_ = H_;
-    if (JLaw_) J0_ = J_;
+    if (scheme_->HLaw()) H0_ = H_;
+    if (scheme_->JLaw()) J0_ = J_;
     Wext0_ = Wext_;
 }
 
@@ -415,8 +407,8 @@ void Foam::solidBody::restoreState()
     lm_ = lm0_;
     u_ = u0_;
     F_ = F0_;
-    if (HLaw_) H_ = H0_;
-    if (JLaw_) J_ = J0_;
+    if (scheme_->HLaw()) H_ = H0_;
+    if (scheme_->JLaw()) J_ = J0_;
     Wext_ = Wext0_;
     updateConstitutive();
 }
@@ -432,14 +424,14 @@ bool Foam::solidBody::updateConstitutive()
         v_[i] = invRho*lm_[i];
         x_[i] = X[i] + u_[i];
     }
-    if (!HLaw_)
+    if (!scheme_->HLaw())
     {
         forAll(F_, i)
         {
             Hc_[i] = cofactor(F_[i]);
         }
     }
-    if (!JLaw_)
+    if (!scheme_->JLaw())
     {
         forAll(F_, i)
         {
@@ -510,7 +502,7 @@ bool Foam::solidBody::updateConstitutive()
     // (kind: 0 J, 1 det F, 2 momentum; J is det F without the J law)
     const label k = returnReduce(kind, sumOp<label>());
     invalidQuantity_ =
-        (k == 2) ? "|v|" : (k == 1 || !JLaw_) ? "det F" : "J";
+        (k == 2) ? "|v|" : (k == 1 || !scheme_->JLaw()) ? "det F" : "J";
     return false;
 }
 
@@ -591,16 +583,16 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     // (|H C|^2/(2 Zp |C|)): with it the J stabilisation is already there,
     // and adding it again damps a checkerboard of J at twice the rate the
     // stable step allows
-    const bool JStabilisation = JLaw_ && !FStabilisation_;
+    const bool upwindF = scheme_->FStabilisation();
+    const bool JStabilisation = scheme_->JLaw() && !upwindF;
     const scalar Sfactor = 0.5/material_->Zp();
-    const scalar vStabP = FStabilisation_ ? 0.5/material_->Zp() : 0;
+    const scalar vStabP = upwindF ? 0.5/material_->Zp() : 0;
     const scalar vStabS =
-        FStabilisation_ && material_->Zs() > VSMALL
-      ? 0.5/material_->Zs() : 0;
+        upwindF && material_->Zs() > VSMALL ? 0.5/material_->Zs() : 0;
     const scalar ZpBody = material_->Zp();
-    const scalar shockMass = FStabilisation_ ? material_->shockMass() : 0;
+    const scalar shockMass = upwindF ? material_->shockMass() : 0;
 
-    if (secondOrder_)
+    if (scheme_->secondOrder())
     {
         forAll(q_, i)
         {
@@ -608,7 +600,8 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         }
         greenGaussGradient
         (
-            dual_, q_, G_, riemannBoundarySlope_ ? &residual_ : nullptr,
+            dual_, q_, G_,
+            scheme_->riemannBoundarySlope() ? &residual_ : nullptr,
             material_->Zp(), material_->Zs()
         );
         limiter_->limit(dual_, q_, G_);
@@ -697,7 +690,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     }
 
     // Interior fluxes: one pass over the edges
-    if (secondOrder_)
+    if (scheme_->secondOrder())
     {
         fluxState qL, qR;
         forAll(es, e)
@@ -823,17 +816,19 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
         uSurface[k] = a*u0_[i] + b*(u_[i] + dt*residual_.surfaceVelocities[k]);
     }
 
+    const bool HLaw = scheme_->HLaw();
+    const bool JLaw = scheme_->JLaw();
     forAll(lm_, i)
     {
         const scalar invV = 1.0/V[i];
         const tensor Drate(invV*residual_.F[i]);
 
         // Rates of H and J use the stage's F and H (before the update)
-        if (HLaw_)
+        if (HLaw)
         {
             H_[i] = a*H0_[i] + b*(H_[i] + dt*tensorCross(F_[i], Drate));
         }
-        if (JLaw_)
+        if (JLaw)
         {
             J_[i] =
                 a*J0_[i] + b*(J_[i] + dt*((H[i] && Drate) + invV*residual_.J[i]));
@@ -968,8 +963,8 @@ void Foam::solidBody::write() const
     writePointField(mesh_, "lm", lm_, dimDensity*dimVelocity);
     writePointField(mesh_, "u", u_, dimLength);
     writePointField(mesh_, "F", F_, dimless);
-    if (HLaw_) writePointField(mesh_, "H", H_, dimless);
-    if (JLaw_) writePointField(mesh_, "J", J_, dimless);
+    if (scheme_->HLaw()) writePointField(mesh_, "H", H_, dimless);
+    if (scheme_->JLaw()) writePointField(mesh_, "J", J_, dimless);
     writePointField(mesh_, "v", v_, dimVelocity);
 
     List<symmTensor> sigma(P_.size());
@@ -1001,19 +996,23 @@ void Foam::solidBody::describe(Ostream& os) const
         << "    material   ";
     material_->describe(os);
     os  << nl << "    solves     p, F"
-        << (HLaw_ ? ", H" : "") << (JLaw_ ? ", J" : "")
-        << (HLaw_ ? "" : "; H = cof F") << (JLaw_ ? "" : "; J = det F")
+        << (scheme_->HLaw() ? ", H" : "") << (scheme_->JLaw() ? ", J" : "")
+        << (scheme_->HLaw() ? "" : "; H = cof F")
+        << (scheme_->JLaw() ? "" : "; J = det F")
         << nl << "    scheme     ";
-    if (secondOrder_)
+    if (scheme_->secondOrder())
     {
         os  << "second order, limiter " << limiter_->type().c_str()
-            << (riemannBoundarySlope_ ? ", boundary slopes from Riemann" : "");
+            << (
+                   scheme_->riemannBoundarySlope()
+                 ? ", boundary slopes from Riemann" : ""
+               );
     }
     else
     {
         os  << "first order (Godunov)";
     }
-    os  << (FStabilisation_ ? ", upwind F flux" : "")
+    os  << (scheme_->FStabilisation() ? ", upwind F flux" : "")
         << (energyStability_.valid() ? ", energy stable" : "")
         << ", Riemann solver ";
     riemann_->describe(os);

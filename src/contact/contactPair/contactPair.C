@@ -143,6 +143,8 @@ void Foam::contactPair::setSide
     side.vC.setSize(side.points.size(), Zero);
     side.force.setSize(side.points.size(), Zero);
     side.closed.setSize(side.points.size(), false);
+    side.gap0.setSize(side.points.size(), GREAT);
+    side.touching.setSize(side.points.size(), false);
 }
 
 
@@ -616,9 +618,11 @@ void Foam::contactPair::mapByAMI()
         }
     }
     A_.pairClosed.setSize(A_.points.size());
+    A_.pairGap0.setSize(A_.points.size());
     forAll(A_.points, i)
     {
         A_.pairClosed[i] = boolList(A_.stateFrom[i].size(), false);
+        A_.pairGap0[i] = scalarList(A_.stateFrom[i].size(), GREAT);
     }
 
     for (contactSide* side : {&A_, &B_})
@@ -836,9 +840,20 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::gatherData
 }
 
 
-void Foam::contactPair::pairState
+Foam::scalar Foam::contactPair::closingAllowance
+(
+    const scalar d0,
+    const scalar d
+) const
+{
+    return max(stage_ == 0 ? d0 : d0 + d, scalar(0))/deltaT_;
+}
+
+
+bool Foam::contactPair::pairState
 (
     const bool closed,
+    const scalar allowance,
     const pointData& a,
     const pointData& b,
     vector& tC,
@@ -864,18 +879,23 @@ void Foam::contactPair::pairState
         );
     };
 
-    if (!closed)
+    if (!closed && allowance >= GREAT)
     {
         separate();
-        return;
+        return false;
     }
 
     // Traction of B measured with A's normal: t^R = -P^B N^B
     const vector tB(-tBown);
 
+    // An open pair's two contact velocities are apart by the allowance
+    // (A approaching B): the stick problem with A's velocity shifted by it
+    // (exact for both solvers, whose A-side relation depends on
+    // v_n^C - v_n^A only)
+    const scalar w = closed ? 0 : allowance;
     contactRiemannSolver::side L
     {
-        tA & n, vA & n, mA.rho(), mA.cp(), a.Lambda,
+        tA & n, (vA & n) - w, mA.rho(), mA.cp(), a.Lambda,
         mA.hugoniot() ? mA.hugoniotS() : 0
     };
     contactRiemannSolver::side R
@@ -889,7 +909,7 @@ void Foam::contactPair::pairState
     if (tnC >= 0)
     {
         separate();
-        return;
+        return closed || ((vA - vB) & n) > w;
     }
 
     // Tangential (acoustic)
@@ -936,8 +956,9 @@ void Foam::contactPair::pairState
     }
 
     tC = tnC*n + ttC;
-    vCA = vnC*n + vtA;
+    vCA = (vnC + w)*n + vtA;
     vCB = vnC*n + vtB;
+    return true;
 }
 
 
@@ -1014,7 +1035,9 @@ Foam::contactPair::contactPair
     AMIUpdate_(dict.getOrDefault<scalar>("AMIUpdate", 0.1)),
     nMappings_(0),
     mappingTime_(0),
-    maxPenetration_(0)
+    maxPenetration_(0),
+    deltaT_(GREAT),
+    stage_(0)
 {
     if (dict.found("s"))
     {
@@ -1214,6 +1237,7 @@ void Foam::contactPair::addNonMatchingFluxes()
         nPairs += A_.stateFrom[i].size();
     }
     vectorField tPair(nPairs), vBPair(nPairs);
+    scalarField touchingPairs(nPairs, 0.0);
     vector vA, vOther;
     nPairs = 0;
     forAll(A_.points, i)
@@ -1221,22 +1245,36 @@ void Foam::contactPair::addNonMatchingFluxes()
         const pointData& a = dataA_[offsetA + i];
         const labelList& from = A_.stateFrom[i];
         const scalarList& w = A_.stateWeight[i];
+        A_.touching[i] = false;
         if (from.empty())
         {
-            pairState(false, a, mirrored(a), A_.tC[i], A_.vC[i], vOther);
+            pairState
+            (
+                false, GREAT, a, mirrored(a), A_.tC[i], A_.vC[i], vOther
+            );
             continue;
         }
         A_.tC[i] = Zero;
         A_.vC[i] = Zero;
+        scalar fraction = 0;
         forAll(from, m)
         {
             const pointData& b = dataB_[from[m]];
             const bool closed = A_.pairClosed[i][m];
-            pairState(closed, a, b, tPair[nPairs], vA, vBPair[nPairs]);
+            const scalar allowance =
+                closed ? 0 : closingAllowance(A_.pairGap0[i][m], pairGap(a, b));
+            const bool touching = pairState
+            (
+                closed, allowance, a, b, tPair[nPairs], vA, vBPair[nPairs]
+            );
+            touchingPairs[nPairs] = touching;
+            fraction += touching*w[m];
             A_.tC[i] += w[m]*tPair[nPairs];
             A_.vC[i] += w[m]*vA;
             ++nPairs;
         }
+        // Closed pairs always touch, so a closed point does too
+        A_.touching[i] = (fraction > 0.5);
         if (A_.closed[i])
         {
             // Interpenetration: against the other surface averaged over the
@@ -1246,6 +1284,9 @@ void Foam::contactPair::addNonMatchingFluxes()
             partnerData(A_, i, dataB_, partner);
             maxPenetration_ =
                 max(maxPenetration_, -pairGap(a, partner)/a.length);
+        }
+        if (A_.touching[i])
+        {
             A_.body->residual().prescribeSurfaceVelocity
             (
                 A_.points[i], A_.vC[i]
@@ -1259,6 +1300,7 @@ void Foam::contactPair::addNonMatchingFluxes()
     const vectorField forceA(allGather(A_.force));
     const vectorField tAll(allGather(tPair));
     const vectorField vBAll(allGather(vBPair));
+    B_.touching = byMajority(B_, B_.pairIndex, allGather(touchingPairs));
 
     // B: its pairs' solutions averaged over its cell for its velocity (and
     // the power), its shares of A's forces for its momentum, so that the
@@ -1293,7 +1335,7 @@ void Foam::contactPair::addNonMatchingFluxes()
         {
             FB[i] -= share[m]*forceA[from[m]];
         }
-        if (B_.closed[i])
+        if (B_.touching[i])
         {
             B_.body->residual().prescribeSurfaceVelocity
             (
@@ -1302,6 +1344,7 @@ void Foam::contactPair::addNonMatchingFluxes()
         }
     }
     B_.body->residual().power += addSideFluxes(B_, false);
+    ++stage_;
 
     List<vector>& RpB = B_.body->residual().momentum;
     const scalarField& wB = B_.body->dual().pointWeights();
@@ -1325,29 +1368,41 @@ void Foam::contactPair::addFluxes()
     const label offsetA = localOffset(A_.points.size());
     const label offsetB = localOffset(B_.points.size());
 
-    // Pairs closed at the start of the step move with their Riemann
-    // velocities, also when tension releases them: the traction-free
-    // velocities then open the gap (for the acoustic solver tension is
-    // exactly that condition), whereas the nodal velocities, driven by the
-    // rest of the control volume, can carry the released points through
-    // each other (B2: contact corners pulled past the plane by the side
-    // surface rolling over).  Open pairs move with their nodal velocities.
+    // Pairs closed at the start of the step, and open ones shutting their
+    // gap in this stage, move with their Riemann velocities, also when
+    // tension releases them: the traction-free velocities then open the
+    // gap (for the acoustic solver tension is exactly that condition),
+    // whereas the nodal velocities, driven by the rest of the control
+    // volume, can carry the released points through each other (B2:
+    // contact corners pulled past the plane by the side surface rolling
+    // over).  Other open pairs move with their nodal velocities.
     vector vOther;
     pointData partner;
     forAll(A_.points, i)
     {
         const pointData& a = dataA_[offsetA + i];
-        if (!partnerData(A_, i, dataB_, partner))
+        scalar allowance = GREAT;
+        if (partnerData(A_, i, dataB_, partner))
+        {
+            allowance = closingAllowance(A_.gap0[i], pairGap(a, partner));
+        }
+        else
         {
             partner = mirrored(a);
         }
-        pairState(A_.closed[i], a, partner, A_.tC[i], A_.vC[i], vOther);
-        if (A_.closed[i])
+        A_.touching[i] = pairState
+        (
+            A_.closed[i], allowance, a, partner, A_.tC[i], A_.vC[i], vOther
+        );
+        if (A_.touching[i])
         {
             A_.body->residual().prescribeSurfaceVelocity
             (
                 A_.points[i], A_.vC[i]
             );
+        }
+        if (A_.closed[i])
+        {
             const scalar pen = -pairGap(a, partner);
             maxPenetration_ = max(maxPenetration_, pen/a.length);
         }
@@ -1355,13 +1410,21 @@ void Foam::contactPair::addFluxes()
     forAll(B_.points, i)
     {
         const pointData& b = dataB_[offsetB + i];
-        if (!partnerData(B_, i, dataA_, partner))
+        scalar allowance = GREAT;
+        if (partnerData(B_, i, dataA_, partner))
+        {
+            allowance = closingAllowance(B_.gap0[i], pairGap(partner, b));
+        }
+        else
         {
             partner = mirrored(b);
         }
         vector tC;
-        pairState(B_.closed[i], partner, b, tC, vOther, B_.vC[i]);
-        if (B_.closed[i])
+        B_.touching[i] = pairState
+        (
+            B_.closed[i], allowance, partner, b, tC, vOther, B_.vC[i]
+        );
+        if (B_.touching[i])
         {
             B_.body->residual().prescribeSurfaceVelocity
             (
@@ -1378,6 +1441,7 @@ void Foam::contactPair::addFluxes()
     // weights)
     A_.body->residual().power += addSideFluxes(A_, true);
     B_.body->residual().power += addSideFluxes(B_, false);
+    ++stage_;
 
     const vectorField forceA(allGather(A_.force));
     List<vector>& RpB = B_.body->residual().momentum;
@@ -1396,8 +1460,11 @@ void Foam::contactPair::addFluxes()
 }
 
 
-void Foam::contactPair::startStep()
+void Foam::contactPair::startStep(const scalar dt)
 {
+    deltaT_ = dt;
+    stage_ = 0;
+
     if (useAMI_ && needsMapping())
     {
         mapByAMI();
@@ -1423,20 +1490,21 @@ void Foam::contactPair::startStep()
             const scalar tol =
                 (A_.closed[i] ? holdTolerance : gapTolerance)*da.length;
             A_.pairClosed[i].setSize(from.size());
+            A_.pairGap0[i].setSize(from.size());
             scalar fraction = 0;
             forAll(from, m)
             {
-                const bool closed = (pairGap(da, b[from[m]]) <= tol);
+                const scalar gap = pairGap(da, b[from[m]]);
+                const bool closed = (gap <= tol);
+                A_.pairGap0[i][m] = gap;
                 A_.pairClosed[i][m] = closed;
                 closedPairs.append(closed);
                 fraction += closed*w[m];
             }
             A_.closed[i] = (fraction > 0.5);
         }
-        closeByMajority
-        (
-            B_, B_.pairIndex, allGather(scalarField(closedPairs))
-        );
+        B_.closed =
+            byMajority(B_, B_.pairIndex, allGather(scalarField(closedPairs)));
         return;
     }
 
@@ -1452,23 +1520,37 @@ void Foam::contactPair::startStep()
     {
         const pointData& da = a[offsetA + i];
         A_.closed[i] = false;
+        A_.gap0[i] = GREAT;
         if (partnerData(A_, i, b, partner))
         {
-            A_.closed[i] = (pairGap(da, partner) <= gapTolerance*da.length);
+            A_.gap0[i] = pairGap(da, partner);
+            A_.closed[i] = (A_.gap0[i] <= gapTolerance*da.length);
         }
         closedA[i] = A_.closed[i];
     }
-    closeByMajority(B_, B_.stateFrom, allGather(closedA));
+    B_.closed = byMajority(B_, B_.stateFrom, allGather(closedA));
+
+    // B's own gaps (its closing allowances)
+    const label offsetB = localOffset(B_.points.size());
+    forAll(B_.points, i)
+    {
+        B_.gap0[i] = GREAT;
+        if (partnerData(B_, i, a, partner))
+        {
+            B_.gap0[i] = pairGap(partner, b[offsetB + i]);
+        }
+    }
 }
 
 
-void Foam::contactPair::closeByMajority
+Foam::boolList Foam::contactPair::byMajority
 (
-    contactSide& side,
+    const contactSide& side,
     const labelListList& index,
-    const scalarField& closedFlags
+    const scalarField& flags
 )
 {
+    boolList result(side.points.size());
     forAll(side.points, i)
     {
         const labelList& from = index[i];
@@ -1476,10 +1558,11 @@ void Foam::contactPair::closeByMajority
         scalar fraction = 0;
         forAll(from, m)
         {
-            fraction += w[m]*closedFlags[from[m]];
+            fraction += w[m]*flags[from[m]];
         }
-        side.closed[i] = (fraction > 0.5);
+        result[i] = (fraction > 0.5);
     }
+    return result;
 }
 
 

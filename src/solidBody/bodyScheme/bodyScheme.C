@@ -195,16 +195,25 @@ Foam::bodyScheme::bodyScheme
         return;
     }
 
+    // Without shear stiffness (the pressure-only Hugoniot bars) nothing
+    // restores a transverse perturbation, and Barth-Jespersen's clipping,
+    // which switches per component with the neighbourhood's extremes,
+    // turns round-off into a transverse mode that grows by 1e10 within
+    // 0.1 s of compression (doc/results.md, "Pressure-only bars")
+    const bool noShear = (m.mu() <= 0);
     limiter_ = choose
     (
         "limiter", wordList(),
-        plastic || nearlyIncompressible || FStabilisation_
+        plastic || nearlyIncompressible || noShear || FStabilisation_
       ? "vanAlbada" : "barthJespersen",
         plastic
       ? kind + ": Barth-Jespersen's per-point clipping of smooth velocity"
         " extrema locks plastic flow"
       : nearlyIncompressible
       ? kind + ": limited per edge, smooth extrema keep second order"
+      : noShear
+      ? string("no shear stiffness: Barth-Jespersen's clipping grows"
+        " round-off into a transverse mode")
       : FStabilisation_
       ? string("with the upwind F flux: Barth-Jespersen's clipping sends a"
         " precursor ahead of release waves")

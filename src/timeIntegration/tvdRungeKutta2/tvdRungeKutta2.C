@@ -78,7 +78,7 @@ Foam::label Foam::tvdRungeKutta2::step
     }
     for (contactPair& c : contacts)
     {
-        c.startStep();
+        c.startStep(dt);
     }
     residuals(bodies, contacts, t);
     forAll(bodies, b)

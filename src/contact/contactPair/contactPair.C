@@ -385,18 +385,30 @@ Foam::contactPair::dualSurface Foam::contactPair::buildSurface
 }
 
 
-Foam::pointField Foam::contactPair::surfacePoints
+Foam::pointField Foam::contactPair::uniquePoints
 (
     const dualSurface& surface,
     const List<pointData>& data
 )
 {
-    const label nUnique = surface.uniqueCopies.size();
-    pointField P(nUnique + surface.extraPoints.size());
+    pointField P(surface.uniqueCopies.size());
     forAll(surface.uniqueCopies, u)
     {
         P[u] = data[surface.uniqueCopies[u][0]].x;
     }
+    return P;
+}
+
+
+Foam::pointField Foam::contactPair::surfacePoints
+(
+    const dualSurface& surface,
+    const pointField& unique
+)
+{
+    const label nUnique = surface.uniqueCopies.size();
+    pointField P(nUnique + surface.extraPoints.size());
+    SubList<point>(P, nUnique) = unique;
     forAll(surface.extraPoints, k)
     {
         const labelList& from = surface.extraPoints[k];
@@ -455,11 +467,23 @@ bool Foam::contactPair::needsMapping() const
 
 void Foam::contactPair::mapByAMI()
 {
+    mapByAMI
+    (
+        uniquePoints(surfaceA_, gatherData(A_)),
+        uniquePoints(surfaceB_, gatherData(B_))
+    );
+}
+
+
+void Foam::contactPair::mapByAMI
+(
+    const pointField& uniqueA,
+    const pointField& uniqueB
+)
+{
     const clockTime clock;
-    const List<pointData> a(gatherData(A_));
-    const List<pointData> b(gatherData(B_));
-    const pointField PA(surfacePoints(surfaceA_, a));
-    const pointField PB(surfacePoints(surfaceB_, b));
+    const pointField PA(surfacePoints(surfaceA_, uniqueA));
+    const pointField PB(surfacePoints(surfaceB_, uniqueB));
     const primitivePatch patchA
     (
         SubList<face>(surfaceA_.faces, surfaceA_.faces.size()), PA
@@ -625,10 +649,26 @@ void Foam::contactPair::mapByAMI()
         A_.pairGap0[i] = scalarList(A_.stateFrom[i].size(), GREAT);
     }
 
-    for (contactSide* side : {&A_, &B_})
+    // Each point's position at this mapping (its slide is measured from
+    // there)
+    auto mapped = []
+    (
+        contactSide& side,
+        const dualSurface& surface,
+        const pointField& unique
+    )
     {
-        side->xMapped = pointField(side->body->x(), side->points);
-    }
+        const label offset = localOffset(side.points.size());
+        side.xMapped.setSize(side.points.size());
+        forAll(side.points, i)
+        {
+            side.xMapped[i] = unique[surface.copyUnique[offset + i]];
+        }
+    };
+    mapped(A_, surfaceA_, uniqueA);
+    mapped(B_, surfaceB_, uniqueB);
+    mappedA_ = uniqueA;
+    mappedB_ = uniqueB;
     ++nMappings_;
     mappingTime_ += clock.elapsedTime();
 }
@@ -1136,22 +1176,28 @@ Foam::contactPair::contactPair
     {
         surfaceA_ = buildSurface(A_);
         surfaceB_ = buildSurface(B_);
-        mapByAMI();
-    }
-    const bool restart = timeDirectory::isRestart(time());
-    if (!restart)
-    {
-        checkOverlap();
     }
 
     // A restart carries the history of the earlier runs on
-    if (restart)
+    if (timeDirectory::isRestart(time()))
     {
         const autoPtr<IOdictionary> state
         (
             readUniformState(stateName(), time())
         );
         maxPenetration_ = readUniformEntry<scalar>(*state, "maxPenetration");
+        if (useAMI_)
+        {
+            restartMapping(*state);
+        }
+    }
+    else
+    {
+        if (useAMI_)
+        {
+            mapByAMI();
+        }
+        checkOverlap();
     }
 }
 
@@ -1217,7 +1263,77 @@ void Foam::contactPair::write() const
 {
     dictionary state;
     state.add("maxPenetration", maxPenetration_);
+    if (useAMI_)
+    {
+        // A list entry is turned into tokens here, at the stream precision
+        // of the moment: full precision, so that the restart maps the same
+        // surfaces to the last bit
+        const unsigned int precision = IOstream::defaultPrecision(17);
+        state.add("mappedA", mappedA_);
+        state.add("mappedB", mappedB_);
+        IOstream::defaultPrecision(precision);
+        state.add("closedA", uniqueFlags(A_, surfaceA_, A_.closed));
+    }
     writeUniformState(stateName(), time(), state);
+}
+
+
+Foam::labelList Foam::contactPair::uniqueFlags
+(
+    const contactSide& side,
+    const dualSurface& surface,
+    const boolList& flags
+) const
+{
+    labelList local(side.points.size());
+    forAll(side.points, i)
+    {
+        local[i] = flags[i];
+    }
+    // (the processor copies of a point carry the same flag)
+    const labelList copies(allGather(local));
+    labelList unique(surface.uniqueCopies.size(), 0);
+    forAll(copies, k)
+    {
+        label& u = unique[surface.copyUnique[k]];
+        u = max(u, copies[k]);
+    }
+    return unique;
+}
+
+
+void Foam::contactPair::restartMapping(const IOdictionary& state)
+{
+    // The surfaces of the last mapping: the same overlaps, and slides
+    // measured from where they were
+    const pointField uniqueA(readUniformEntry<pointField>(state, "mappedA"));
+    const pointField uniqueB(readUniformEntry<pointField>(state, "mappedB"));
+    const labelList closedA(readUniformEntry<labelList>(state, "closedA"));
+    const label nA = surfaceA_.uniqueCopies.size();
+    const label nB = surfaceB_.uniqueCopies.size();
+    if
+    (
+        uniqueA.size() != nA || uniqueB.size() != nB
+     || closedA.size() != nA
+    )
+    {
+        FatalIOErrorInFunction(state)
+            << "Contact pair '" << name_ << "': the restart file holds "
+            << uniqueA.size() << " and " << uniqueB.size()
+            << " surface points (closed flags: " << closedA.size()
+            << "), the patches have " << nA << " and " << nB << nl
+            << "    It was written for other meshes: restart from a time"
+            << " written with these meshes." << exit(FatalIOError);
+    }
+    mapByAMI(uniqueA, uniqueB);
+
+    // Which points the pair holds closed (their pairs stay closed while
+    // the gap is below holdTolerance)
+    const label offsetA = localOffset(A_.points.size());
+    forAll(A_.points, i)
+    {
+        A_.closed[i] = closedA[surfaceA_.copyUnique[offsetA + i]];
+    }
 }
 
 

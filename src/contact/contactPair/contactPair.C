@@ -426,12 +426,24 @@ Foam::pointField Foam::contactPair::surfacePoints
 bool Foam::contactPair::needsMapping() const
 {
     // Displacements since the last mapping, of all points of both sides
-    auto displacement = [](const contactSide& side)
+    auto displacement = []
+    (
+        const contactSide& side,
+        const dualSurface& surface,
+        const pointField& mapped
+    )
     {
-        const pointField x(side.body->x(), side.points);
-        return vectorField(allGather(vectorField(x - side.xMapped)));
+        const label offset = localOffset(side.points.size());
+        const List<point>& x = side.body->x();
+        vectorField d(side.points.size());
+        forAll(side.points, i)
+        {
+            d[i] = x[side.points[i]] - mapped[surface.copyUnique[offset + i]];
+        }
+        return vectorField(allGather(d));
     };
-    const vectorField dA(displacement(A_)), dB(displacement(B_));
+    const vectorField dA(displacement(A_, surfaceA_, mappedA_));
+    const vectorField dB(displacement(B_, surfaceB_, mappedB_));
 
     // A point's slide relative to its partners (their overlap-weighted
     // displacement), tangentially: surfaces that move or spread together
@@ -649,24 +661,7 @@ void Foam::contactPair::mapByAMI
         A_.pairGap0[i] = scalarList(A_.stateFrom[i].size(), GREAT);
     }
 
-    // Each point's position at this mapping (its slide is measured from
-    // there)
-    auto mapped = []
-    (
-        contactSide& side,
-        const dualSurface& surface,
-        const pointField& unique
-    )
-    {
-        const label offset = localOffset(side.points.size());
-        side.xMapped.setSize(side.points.size());
-        forAll(side.points, i)
-        {
-            side.xMapped[i] = unique[surface.copyUnique[offset + i]];
-        }
-    };
-    mapped(A_, surfaceA_, uniqueA);
-    mapped(B_, surfaceB_, uniqueB);
+    // (slides are measured from these positions)
     mappedA_ = uniqueA;
     mappedB_ = uniqueB;
     ++nMappings_;
@@ -1460,7 +1455,6 @@ void Foam::contactPair::addNonMatchingFluxes()
         }
     }
     B_.body->residual().power += addSideFluxes(B_, false);
-    ++stage_;
 
     List<vector>& RpB = B_.body->residual().momentum;
     const scalarField& wB = B_.body->dual().pointWeights();
@@ -1478,6 +1472,7 @@ void Foam::contactPair::addFluxes()
     if (useAMI_)
     {
         addNonMatchingFluxes();
+        ++stage_;
         return;
     }
 

@@ -54,6 +54,26 @@ inline Foam::scalar subFacePyramidVolume
     )/6.0;
 }
 
+// The mesh edge a-b among the edges of point a (what primitiveMesh's
+// faceEdges would hold, without its list per face)
+inline Foam::label edgeOf
+(
+    const Foam::edgeList& edges,
+    const Foam::labelList& edgesOfA,
+    const Foam::label a,
+    const Foam::label b
+)
+{
+    for (const Foam::label e : edgesOfA)
+    {
+        if (edges[e].otherVertex(a) == b)
+        {
+            return e;
+        }
+    }
+    return -1;
+}
+
 // A strict order of two distinct points that every processor agrees on,
 // to give shared edges one orientation while summing across processors
 inline bool lexLess(const Foam::point& p, const Foam::point& q)
@@ -68,12 +88,11 @@ inline bool lexLess(const Foam::point& p, const Foam::point& q)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dualMesh::checkCells() const
+void Foam::dualMesh::checkCells(const scalarField& V) const
 {
     // An inverted cell would enter the dual with negative sub-volumes (the
     // run then creates energy) and a flat one divides by zero: stop with
     // the first such cell.  Flat means below 1e-12 of the mean volume.
-    const scalarField& V = mesh_.cellVolumes();
     const scalar meanV =
         returnReduce(sum(mag(V)), sumOp<scalar>())
        /max(returnReduce(V.size(), sumOp<label>()), label(1));
@@ -114,15 +133,18 @@ void Foam::dualMesh::checkCells() const
 }
 
 
-void Foam::dualMesh::calcCellContributions()
+void Foam::dualMesh::calcCellContributions
+(
+    const pointField& cellCentres,
+    vectorField& edgeC
+)
 {
     const pointField& X = mesh_.points();
-    const vectorField& faceCentres = mesh_.faceCentres();
-    const vectorField& cellCentres = mesh_.cellCentres();
     const faceList& faces = mesh_.faces();
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
-    const labelListList& faceEdges = mesh_.faceEdges();
+    const edgeList& edges = mesh_.edges();
+    const labelListList& pointEdges = mesh_.pointEdges();
 
     // Every face is visited once; it contributes to its owner cell (face
     // oriented outwards) and, if internal, to its neighbour (inwards).
@@ -130,8 +152,8 @@ void Foam::dualMesh::calcCellContributions()
     forAll(faces, facei)
     {
         const face& f = faces[facei];
-        const labelList& fEdges = faceEdges[facei];
-        const point& fc = faceCentres[facei];
+        vector fc, fA;
+        faceGeometry(f, X, fc, fA);
         const label nSides = (facei < mesh_.nInternalFaces()) ? 2 : 1;
 
         for (label side = 0; side < nSides; ++side)
@@ -152,14 +174,14 @@ void Foam::dualMesh::calcCellContributions()
                 // a-b in this cell; with the face oriented out of the cell
                 // this orientation points from a to b
                 const vector S(sgn*0.5*((cc - mNext) ^ (fc - mNext)));
-                const label e = fEdges[fp];
+                const label e = edgeOf(edges, pointEdges[a], a, b);
                 if (edgeStart_[e] == a)
                 {
-                    edgeC_[e] += S;
+                    edgeC[e] += S;
                 }
                 else
                 {
-                    edgeC_[e] -= S;
+                    edgeC[e] -= S;
                 }
 
                 volume_[a] +=
@@ -173,7 +195,6 @@ void Foam::dualMesh::calcCellContributions()
 void Foam::dualMesh::calcBoundarySubFaces()
 {
     const pointField& X = mesh_.points();
-    const vectorField& faceCentres = mesh_.faceCentres();
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
 
     patchSubFaces_.setSize(patches.size());
@@ -203,7 +224,8 @@ void Foam::dualMesh::calcBoundarySubFaces()
         forAll(pp, i)
         {
             const face& f = pp[i];
-            const point& fc = faceCentres[pp.start() + i];
+            vector fc, fA;
+            faceGeometry(f, X, fc, fA);
 
             forAll(f, fp)
             {
@@ -227,10 +249,10 @@ void Foam::dualMesh::calcBoundarySubFaces()
 }
 
 
-void Foam::dualMesh::synchronise()
+void Foam::dualMesh::synchronise(vectorField& edgeC)
 {
     pointWeight_ = 1.0;
-    edgeWeight_ = 1.0;
+    scalarField edgeWeight(edgeC.size(), 1.0);
 
     if (Pstream::parRun())
     {
@@ -245,37 +267,36 @@ void Foam::dualMesh::synchronise()
 
         // Shared edges may be oriented differently on each processor:
         // sum them in a common (lexicographic) orientation
-        forAll(edgeC_, e)
+        forAll(edgeC, e)
         {
             if (!lexLess(X[edgeStart_[e]], X[edgeEnd_[e]]))
             {
-                edgeC_[e] = -edgeC_[e];
+                edgeC[e] = -edgeC[e];
             }
         }
         syncTools::syncEdgeList
         (
-            mesh_, edgeC_, plusEqOp<vector>(), vector(Zero)
+            mesh_, edgeC, plusEqOp<vector>(), vector(Zero)
         );
-        forAll(edgeC_, e)
+        forAll(edgeC, e)
         {
             if (!lexLess(X[edgeStart_[e]], X[edgeEnd_[e]]))
             {
-                edgeC_[e] = -edgeC_[e];
+                edgeC[e] = -edgeC[e];
             }
         }
-        syncTools::syncEdgeList(mesh_, edgeWeight_, plusEqOp<scalar>(), 0.0);
+        edgeWeight = edgeWeights();
 
         pointWeight_ = 1.0/pointWeight_;
-        edgeWeight_ = 1.0/edgeWeight_;
     }
 
-    edgeNormal_.setSize(edgeC_.size());
-    edgeMagSf_.setSize(edgeC_.size());
-    forAll(edgeC_, e)
+    edgeNormal_.setSize(edgeC.size());
+    edgeMagSf_.setSize(edgeC.size());
+    forAll(edgeC, e)
     {
-        const scalar magC = mag(edgeC_[e]);
-        edgeNormal_[e] = edgeC_[e]/max(magC, VSMALL);
-        edgeMagSf_[e] = magC*edgeWeight_[e];
+        const scalar magC = mag(edgeC[e]);
+        edgeNormal_[e] = edgeC[e]/max(magC, VSMALL);
+        edgeMagSf_[e] = magC*edgeWeight[e];
     }
 }
 
@@ -367,10 +388,8 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     mesh_(mesh),
     edgeStart_(mesh.nEdges()),
     edgeEnd_(mesh.nEdges()),
-    edgeC_(mesh.nEdges(), Zero),
     edgeNormal_(),
     edgeMagSf_(),
-    edgeWeight_(mesh.nEdges(), 1.0),
     volume_(mesh.nPoints(), 0.0),
     length_(mesh.nPoints(), GREAT),
     pointWeight_(mesh.nPoints(), 1.0),
@@ -394,10 +413,22 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
         length_[edgeEnd_[e]] = min(length_[edgeEnd_[e]], l);
     }
 
-    checkCells();
-    calcCellContributions();
-    calcBoundarySubFaces();
-    synchronise();
+    {
+        // Build-time data: cell centres and volumes, and the full area
+        // vectors of the edges (the fluxes keep their normals and this
+        // processor's share of their magnitudes)
+        pointField cellCentres;
+        scalarField cellVolumes;
+        calcCellCentres(cellCentres, cellVolumes);
+        checkCells(cellVolumes);
+        cellVolumes.clear();
+
+        vectorField edgeC(mesh.nEdges(), Zero);
+        calcCellContributions(cellCentres, edgeC);
+        cellCentres.clear();
+        calcBoundarySubFaces();
+        synchronise(edgeC);
+    }
     calcPointEdges();
     calcBoundaryNormals();
 
@@ -441,6 +472,19 @@ Foam::dualMesh::patchPointNormals(const label patchi) const
         n /= max(mag(n), VSMALL);
     }
     return tN;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::dualMesh::edgeWeights() const
+{
+    tmp<scalarField> tw(new scalarField(nEdges(), 1.0));
+    if (Pstream::parRun())
+    {
+        scalarField& w = tw.ref();
+        syncTools::syncEdgeList(mesh_, w, plusEqOp<scalar>(), 0.0);
+        w = 1.0/w;
+    }
+    return tw;
 }
 
 

@@ -19,6 +19,8 @@
 #include "IFstream.H"
 #include "IStringStream.H"
 
+#include <malloc.h>
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::solidBody::readScheme()
@@ -313,6 +315,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     // demand-driven geometry and addressing (rebuilt on demand if needed)
     mesh_.clearGeom();
     mesh_.clearAddressing();
+    malloc_trim(0);
     checkDecomposition();
 
     material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());

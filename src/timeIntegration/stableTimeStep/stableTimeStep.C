@@ -8,6 +8,32 @@
 #include "materialModel.H"
 #include "solidBoundaryCondition.H"
 
+#include <Eigen/Eigenvalues>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Largest eigenvalue of a symmetric tensor.  (OpenFOAM v1912's eigenValues
+// solves the general cubic: with the repeated roots of a symmetric stencil
+// its round-off gives "complex eigenvalues" warnings.)
+Foam::scalar maxEigenValue(const Foam::symmTensor& t)
+{
+    Eigen::Matrix3d m;
+    m << t.xx(), t.xy(), t.xz(),
+         t.xy(), t.yy(), t.yz(),
+         t.xz(), t.yz(), t.zz();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig
+    (
+        m, Eigen::EigenvaluesOnly
+    );
+    return eig.eigenvalues().maxCoeff();
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::stableTimeStep::stableTimeStep
@@ -102,7 +128,7 @@ Foam::stableTimeStep::stableTimeStep
     forAll(rMomentum_, i)
     {
         rMomentum_[i] =
-            (cs*S[i] + (cp - cs)*cmptMax(eigenValues(T[i])))/V[i];
+            (cs*S[i] + (cp - cs)*maxEigenValue(T[i]))/V[i];
     }
 
     // J stabilisation: Omega dJ/dt gains sum_j S_ij (Sigma_J,j - Sigma_J,i)

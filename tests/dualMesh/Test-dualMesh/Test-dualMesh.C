@@ -76,8 +76,10 @@ int main(int argc, char *argv[])
 
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
-    const vectorField& C = dual.edgeC();
-    const scalarField& w = dual.edgeWeights();
+    // Full area vectors C_e (summed over processors) and the processor's
+    // share w_e of each
+    const scalarField w(dual.edgeWeights());
+    const vectorField C(dual.edgeNormals()*dual.edgeMagSf()/w);
     const scalarField& vol = dual.volumes();
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
     const label nPts = mesh.nPoints();
@@ -173,7 +175,7 @@ int main(int argc, char *argv[])
                 maxRel = max
                 (
                     maxRel,
-                    mag(dual.C(e, i) + dual.C(e, j))/mag(C[e])
+                    mag(dual.C(e, i) + dual.C(e, j))/(w[e]*mag(C[e]))
                 );
                 if (i != es[e] && i != ee[e])
                 {

@@ -48,16 +48,44 @@ Foam::solidBoundaryCondition::solidBoundaryCondition
         return (minCos[i] >= cosFeature) ? meanN[i] : N;
     };
 
-    normalPoint_.setSize(sf.size());
-    normalPrev_.setSize(sf.size());
-    normalNext_.setSize(sf.size());
+    // The distinct (point, normal) pairs, found through the pairs already
+    // met at each point (a handful)
+    List<DynamicList<label>> ofPoint(mesh.nPoints());
+    DynamicList<label> points(sf.size());
+    DynamicList<vector> normals(sf.size());
+    auto stateIndex = [&](const label i, const vector& n) -> label
+    {
+        for (const label k : ofPoint[i])
+        {
+            if (normals[k] == n)
+            {
+                return k;
+            }
+        }
+        ofPoint[i].append(points.size());
+        points.append(i);
+        normals.append(n);
+        return points.size() - 1;
+    };
+
+    stateOfPoint_.setSize(sf.size());
+    statePrev_.setSize(sf.size(), -1);
+    stateNext_.setSize(sf.size(), -1);
     forAll(sf.point, s)
     {
         const vector N(sf.area[s]/mag(sf.area[s]));
-        normalPoint_[s] = normal(sf.point[s], N);
-        normalPrev_[s] = normal(sf.prev[s], N);
-        normalNext_[s] = normal(sf.next[s], N);
+        stateOfPoint_[s] = stateIndex(sf.point[s], normal(sf.point[s], N));
+        if (sf.nbrWeight[s] > 0)
+        {
+            statePrev_[s] = stateIndex(sf.prev[s], normal(sf.prev[s], N));
+            stateNext_[s] = stateIndex(sf.next[s], normal(sf.next[s], N));
+        }
     }
+    statePoint_.transfer(points);
+    stateNormal_.transfer(normals);
+    stateT_.setSize(statePoint_.size());
+    stateV_.setSize(statePoint_.size());
+    stateP_.setSize(statePoint_.size());
 }
 
 
@@ -106,23 +134,27 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     const bool keepStates = tB.size();
     scalar power = 0;
 
-    // Contact state of point k seen through the sub-face normal N
-    auto state = [&](const label k, const vector& N, vector& tC, vector& vC)
+    // The one-sided Riemann state of every distinct (point, normal) pair
+    forAll(statePoint_, k)
     {
-        vector n(H[k] & N);
+        const label i = statePoint_[k];
+        const vector& N = stateNormal_[k];
+        vector n(H[i] & N);
         const scalar Lambda = mag(n);
         n /= Lambda;
         const waveData w{body.Zp, body.Zs, body.shockMass*Lambda};
-        contactState(n, N, x[k], v[k], P[k] & N, w, t, tC, vC);
-    };
+        contactState(n, N, x[i], v[i], P[i] & N, w, t, stateT_[k], stateV_[k]);
+        stateP_[k] = stateT_[k] & stateV_[k];
+    }
 
     forAll(sf.point, s)
     {
         const label i = sf.point[s];
         const scalar magA = mag(sf.area[s]);
+        const label k = stateOfPoint_[s];
 
-        vector tC, vC;
-        state(i, normalPoint_[s], tC, vC);
+        vector tC(stateT_[k]);
+        vector vC(stateV_[k]);
 
         // The power is the same quadrature of the pointwise power t.v, not
         // the product of the averaged t and v: a fixed frictionless wall or
@@ -130,16 +162,14 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         // product of averages is not zero at a contact perimeter, where an
         // open neighbour approaching the wall meets a closed point's
         // pressure, and would hide numerical dissipation as external work)
-        scalar pC = tC & vC;
+        scalar pC = stateP_[k];
         const scalar w = sf.nbrWeight[s];
         if (w > 0)
         {
-            vector tP, vP, tN, vN;
-            state(sf.prev[s], normalPrev_[s], tP, vP);
-            state(sf.next[s], normalNext_[s], tN, vN);
-            tC = (1 - 2*w)*tC + w*(tP + tN);
-            vC = (1 - 2*w)*vC + w*(vP + vN);
-            pC = (1 - 2*w)*pC + w*((tP & vP) + (tN & vN));
+            const label kP = statePrev_[s], kN = stateNext_[s];
+            tC = (1 - 2*w)*tC + w*(stateT_[kP] + stateT_[kN]);
+            vC = (1 - 2*w)*vC + w*(stateV_[kP] + stateV_[kN]);
+            pC = (1 - 2*w)*pC + w*(stateP_[kP] + stateP_[kN]);
         }
 
         Rp[i] += magA*tC;

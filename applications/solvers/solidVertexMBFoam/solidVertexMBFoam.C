@@ -93,6 +93,8 @@ int main(int argc, char *argv[])
         lastWriteIndex = runTime.timeIndex();
     };
 
+    #include "failureAdvice.H"
+
     Info<< "Starting time loop" << nl << endl;
 
     // The run ends exactly at endTime (the last step is shortened to land

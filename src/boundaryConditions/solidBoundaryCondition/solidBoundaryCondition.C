@@ -143,7 +143,10 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         const scalar Lambda = mag(n);
         n /= Lambda;
         const waveData w{body.Zp, body.Zs, body.shockMass*Lambda};
-        contactState(n, N, x[i], v[i], P[i] & N, w, t, stateT_[k], stateV_[k]);
+        contactState
+        (
+            n, N, x[i], v[i], P[i] & N, w, t, stateT_[k], stateV_[k]
+        );
         stateP_[k] = stateT_[k] & stateV_[k];
     }
 

@@ -68,17 +68,18 @@ Foam::solidBoundaryCondition::solidBoundaryCondition
         return points.size() - 1;
     };
 
-    stateOfPoint_.setSize(sf.size());
-    statePrev_.setSize(sf.size(), -1);
-    stateNext_.setSize(sf.size(), -1);
+    subFaceState_.setSize(sf.size());
+    subFacePrevState_.setSize(sf.size(), -1);
+    subFaceNextState_.setSize(sf.size(), -1);
     forAll(sf.point, s)
     {
         const vector N(sf.area[s]/mag(sf.area[s]));
-        stateOfPoint_[s] = stateIndex(sf.point[s], normal(sf.point[s], N));
+        subFaceState_[s] = stateIndex(sf.point[s], normal(sf.point[s], N));
         if (sf.nbrWeight[s] > 0)
         {
-            statePrev_[s] = stateIndex(sf.prev[s], normal(sf.prev[s], N));
-            stateNext_[s] = stateIndex(sf.next[s], normal(sf.next[s], N));
+            const label p = sf.prev[s], n = sf.next[s];
+            subFacePrevState_[s] = stateIndex(p, normal(p, N));
+            subFaceNextState_[s] = stateIndex(n, normal(n, N));
         }
     }
     statePoint_.transfer(points);
@@ -154,7 +155,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     {
         const label i = sf.point[s];
         const scalar magA = mag(sf.area[s]);
-        const label k = stateOfPoint_[s];
+        const label k = subFaceState_[s];
 
         vector tC(stateT_[k]);
         vector vC(stateV_[k]);
@@ -169,7 +170,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         const scalar w = sf.nbrWeight[s];
         if (w > 0)
         {
-            const label kP = statePrev_[s], kN = stateNext_[s];
+            const label kP = subFacePrevState_[s], kN = subFaceNextState_[s];
             tC = (1 - 2*w)*tC + w*(stateT_[kP] + stateT_[kN]);
             vC = (1 - 2*w)*vC + w*(stateV_[kP] + stateV_[kN]);
             pC = (1 - 2*w)*pC + w*(stateP_[kP] + stateP_[kN]);

@@ -161,7 +161,10 @@ int main(int argc, char *argv[])
             Info<< "; " << c.nMappings() << " AMI mappings in "
                 << c.mappingTime() << " s";
         }
-        Info<< nl;
+        const scalar wall = c.wallTime();
+        Info<< "; the pair took " << wall << " s of wall time ("
+            << std::round(1000*wall/max(stats.wallTime(), VSMALL))/10
+            << " % of the run)" << nl;
     }
     for (const solidBody& b : bodies)
     {

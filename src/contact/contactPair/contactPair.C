@@ -12,6 +12,10 @@
 #include "AMIPatchToPatchInterpolation.H"
 #include "EdgeMap.H"
 #include "clockTime.H"
+#include "clockValue.H"
+#include "globalIndex.H"
+#include "indexedOctree.H"
+#include "treeDataPoint.H"
 
 // * * * * * * * * * * * * * Local Helper Functions  * * * * * * * * * * * * //
 
@@ -61,6 +65,125 @@ struct lexicographicLess
     }
 };
 
+// Processor copies of gathered points (the same position): each point's
+// unique point, numbered in lexicographic order of the positions, and each
+// unique point's copies in increasing order
+void mergeCopies
+(
+    const UList<point>& X,
+    labelList& copyUnique,
+    labelListList& uniqueCopies
+)
+{
+    labelList order(identity(X.size()));
+    std::sort(order.begin(), order.end(), lexicographicLess{X});
+    copyUnique.setSize(X.size());
+    label nUnique = 0;
+    forAll(order, k)
+    {
+        if (k > 0 && X[order[k]] != X[order[k - 1]])
+        {
+            ++nUnique;
+        }
+        copyUnique[order[k]] = nUnique;
+    }
+    nUnique = X.empty() ? 0 : nUnique + 1;
+    uniqueCopies.setSize(nUnique);
+    for (labelList& copies : uniqueCopies)
+    {
+        copies.clear();
+    }
+    forAll(X, k)
+    {
+        uniqueCopies[copyUnique[k]].append(k);
+    }
+}
+
+
+// Points binned by their position in the plane normal to a direction, in
+// square cells of a given width (only occupied cells are stored)
+class tangentialGrid
+{
+    vector t1_, t2_;
+    scalar width_;
+    HashTable<DynamicList<label>, labelPair, Hash<labelPair>> cells_;
+
+    labelPair cell(const point& p) const
+    {
+        return labelPair
+        (
+            label(std::floor((p & t1_)/width_)),
+            label(std::floor((p & t2_)/width_))
+        );
+    }
+
+public:
+
+    tangentialGrid
+    (
+        const UList<point>& P,
+        const vector& direction,
+        const scalar width
+    )
+    :
+        width_(width > 0 ? width : GREAT)
+    {
+        // Any two unit vectors normal to the direction and to each other
+        const vector e(normalised(direction));
+        const vector a
+        (
+            mag(e.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0)
+        );
+        t1_ = normalised(a - (a & e)*e);
+        t2_ = e ^ t1_;
+        forAll(P, j)
+        {
+            cells_(cell(P[j])).append(j);
+        }
+    }
+
+    //- The points in the cell of p and its eight neighbours, in
+    //  increasing order
+    labelList near(const point& p) const
+    {
+        const labelPair c(cell(p));
+        DynamicList<label> result;
+        for (label i = -1; i <= 1; ++i)
+        {
+            for (label j = -1; j <= 1; ++j)
+            {
+                const auto iter =
+                    cells_.cfind(labelPair(c.first() + i, c.second() + j));
+                if (iter.found())
+                {
+                    result.append(*iter);
+                }
+            }
+        }
+        std::sort(result.begin(), result.end());
+        return labelList(std::move(result));
+    }
+};
+
+
+// Adds the wall time of its scope to a total
+struct scopeTimer
+{
+    scalar& total;
+    const clockValue start;
+
+    explicit scopeTimer(scalar& t)
+    :
+        total(t),
+        start(true)
+    {}
+
+    ~scopeTimer()
+    {
+        total += double(start.elapsed());
+    }
+};
+
 template<class T>
 List<T> allGather(const List<T>& local)
 {
@@ -107,6 +230,7 @@ void Foam::contactPair::setSide
 
     const polyPatch& pp = mesh.boundaryMesh()[side.patchi];
     side.points = pp.meshPoints();
+    side.offset = localOffset(side.points.size());
     const Map<label>& local = pp.meshPointMap();
 
     const dualMesh::patchSubFaces& sf = body.dual().subFaces(side.patchi);
@@ -180,15 +304,14 @@ void Foam::contactPair::checkFacing() const
 
 void Foam::contactPair::checkOverlap() const
 {
-    const List<pointData> a(gatherData(A_));
-    const List<pointData> b(gatherData(B_));
-    const label offsetA = localOffset(A_.points.size());
+    const List<pointData> a(exchangeData(A_));
+    const List<pointData> b(exchangeData(B_));
 
     scalar worst = 0;
     point where(Zero);
     forAll(A_.points, i)
     {
-        const pointData& da = a[offsetA + i];
+        const pointData& da = a[i];
         pointData db;
         if (!partnerData(A_, i, b, db))
         {
@@ -295,13 +418,12 @@ Foam::contactPair::dualSurface Foam::contactPair::buildSurface
 
     // The patch faces of all processors, over the gathered point list
     const polyPatch& pp = side.body->mesh().boundaryMesh()[side.patchi];
-    const label offset = localOffset(side.points.size());
     faceList localFaces(pp.localFaces());
     for (face& f : localFaces)
     {
         for (label& p : f)
         {
-            p += offset;
+            p += side.offset;
         }
     }
     const faceList faces(allGather(localFaces));
@@ -311,24 +433,8 @@ Foam::contactPair::dualSurface Foam::contactPair::buildSurface
     );
 
     // Merge the processor copies of a point (same reference position)
-    labelList order(identity(X0.size()));
-    std::sort(order.begin(), order.end(), lexicographicLess{X0});
-    surface.copyUnique.setSize(X0.size());
-    label nUnique = 0;
-    forAll(order, k)
-    {
-        if (k > 0 && X0[order[k]] != X0[order[k - 1]])
-        {
-            ++nUnique;
-        }
-        surface.copyUnique[order[k]] = nUnique;
-    }
-    nUnique = X0.empty() ? 0 : nUnique + 1;
-    surface.uniqueCopies.setSize(nUnique);
-    forAll(X0, k)
-    {
-        surface.uniqueCopies[surface.copyUnique[k]].append(k);
-    }
+    mergeCopies(X0, surface.copyUnique, surface.uniqueCopies);
+    const label nUnique = surface.uniqueCopies.size();
 
     // Sub-faces: (point, midpoint to next, face centre, midpoint to
     // previous) of every face corner, as the dual mesh's boundary sub-faces
@@ -425,25 +531,27 @@ Foam::pointField Foam::contactPair::surfacePoints
 
 bool Foam::contactPair::needsMapping() const
 {
-    // Displacements since the last mapping, of all points of both sides
-    auto displacement = []
+    // Displacements since the last mapping of both sides' points (this
+    // processor's and its points' remote partners)
+    auto displacement = [this]
     (
         const contactSide& side,
         const dualSurface& surface,
         const pointField& mapped
     )
     {
-        const label offset = localOffset(side.points.size());
         const List<point>& x = side.body->x();
-        vectorField d(side.points.size());
+        List<vector> d(side.points.size());
         forAll(side.points, i)
         {
-            d[i] = x[side.points[i]] - mapped[surface.copyUnique[offset + i]];
+            d[i] =
+                x[side.points[i]]
+              - mapped[surface.copyUnique[side.offset + i]];
         }
-        return vectorField(allGather(d));
+        return exchanged(side, std::move(d));
     };
-    const vectorField dA(displacement(A_, surfaceA_, mappedA_));
-    const vectorField dB(displacement(B_, surfaceB_, mappedB_));
+    const List<vector> dA(displacement(A_, surfaceA_, mappedA_));
+    const List<vector> dB(displacement(B_, surfaceB_, mappedB_));
 
     // A point's slide relative to its partners (their overlap-weighted
     // displacement), tangentially: surfaces that move or spread together
@@ -453,12 +561,11 @@ bool Foam::contactPair::needsMapping() const
     for (const contactSide* side : {&A_, &B_})
     {
         const bool isA = (side == &A_);
-        const vectorField& own = isA ? dA : dB;
-        const vectorField& other = isA ? dB : dA;
-        const label offset = localOffset(side->points.size());
+        const List<vector>& own = isA ? dA : dB;
+        const List<vector>& other = isA ? dB : dA;
         forAll(side->points, i)
         {
-            vector d(own[offset + i]);
+            vector d(own[i]);
             const labelList& from = side->stateFrom[i];
             const scalarList& w = side->stateWeight[i];
             forAll(from, m)
@@ -579,12 +686,11 @@ void Foam::contactPair::mapByAMI
         const List<Map<scalar>>& overlap
     )
     {
-        const label offset = localOffset(side.points.size());
         side.stateFrom.setSize(side.points.size());
         side.stateWeight.setSize(side.points.size());
         forAll(side.points, i)
         {
-            const Map<scalar>& row = overlap[own.copyUnique[offset + i]];
+            const Map<scalar>& row = overlap[own.copyUnique[side.offset + i]];
             const labelList toc(row.sortedToc());
             scalar sum = 0;
             for (const label u : toc)
@@ -608,7 +714,7 @@ void Foam::contactPair::mapByAMI
     // B's force shares: each A point's force split over the B points its
     // cell overlaps, in proportion to the overlap areas (every processor
     // copy of the A point passes on its own part of the force)
-    const label offsetB = localOffset(B_.points.size());
+    const label offsetB = B_.offset;
     B_.forceFrom.setSize(B_.points.size());
     B_.forceShare.setSize(B_.points.size());
     forAll(B_.points, i)
@@ -661,6 +767,8 @@ void Foam::contactPair::mapByAMI
         A_.pairGap0[i] = scalarList(A_.stateFrom[i].size(), GREAT);
     }
 
+    buildExchange();
+
     // (slides are measured from these positions)
     mappedA_ = uniqueA;
     mappedB_ = uniqueB;
@@ -679,14 +787,37 @@ bool Foam::contactPair::matchSides(const bool fatal)
     const pointField globalB(allGather(pointField(XB, B_.points)));
     const vectorField globalNA(allGather(A_.N));
 
+    // Candidate partners from a grid over the plane normal to the approach
+    // direction (matchDirection, else A's mean normal), cells one smallest
+    // edge length wide: a partner within the matching tolerance lies in
+    // the point's cell or a neighbouring one when the point looks along
+    // that direction (flat patches, matchDirection); a point whose
+    // candidates hold none (its own normal tilted on a curved patch) is
+    // matched against all points, so the partners are those of a search
+    // over all points, found in about linear time
+    const vector approach
+    (
+        magSqr(matchDirection_) > 0
+      ? matchDirection_
+      : normalised(sum(globalNA))
+    );
+    const scalar cellSize = returnReduce
+    (
+        min(min(A_.length), min(B_.length)),
+        minOp<scalar>()
+    );
+    const tangentialGrid gridB(globalB, approach, cellSize);
+
     // Partner: the point of the other side at the same tangential position
-    // (relative to A's normal), i.e. across the gap
+    // (relative to A's normal), i.e. across the gap; the first of equally
+    // near points (processor copies)
     auto match = [&]
     (
         const pointField& from,
         const vectorField& fromN,
         const scalarField& len,
         const pointField& to,
+        const tangentialGrid& grid,
         labelList& partner,
         const word& fromBody
     )
@@ -694,17 +825,28 @@ bool Foam::contactPair::matchSides(const bool fatal)
         partner.setSize(from.size(), -1);
         forAll(from, i)
         {
+            const vector n(gapDirection(fromN[i]));
             scalar best = GREAT;
             label ibest = -1;
-            forAll(to, j)
+            auto nearest = [&](const label j)
             {
                 const vector d(to[j] - from[i]);
-                const vector n(gapDirection(fromN[i]));
                 const scalar dt = mag(d - (d & n)*n);
-                if (dt < best)
+                if (dt < best || (dt == best && j < ibest))
                 {
                     best = dt;
                     ibest = j;
+                }
+            };
+            for (const label j : grid.near(from[i]))
+            {
+                nearest(j);
+            }
+            if (ibest < 0 || best > 1e-6*len[i])
+            {
+                forAll(to, j)
+                {
+                    nearest(j);
                 }
             }
             if ((ibest < 0 || best > 1e-6*len[i]) && !fatal)
@@ -737,25 +879,6 @@ bool Foam::contactPair::matchSides(const bool fatal)
         return true;
     };
 
-    // All copies of each partner point (a point shared by processors
-    // appears once per processor in the gathered lists)
-    auto copies = [&](const labelList& partner, const pointField& to)
-    {
-        labelListList result(partner.size());
-        forAll(partner, i)
-        {
-            const point& p = to[partner[i]];
-            forAll(to, j)
-            {
-                if (to[j] == p)
-                {
-                    result[i].append(j);
-                }
-            }
-        }
-        return result;
-    };
-
     // A's points look along their own normal; B's along the normal of the
     // nearest A point (A's normal defines the contact direction).  Every
     // processor decides on the whole (gathered) lists, so all agree
@@ -766,7 +889,7 @@ bool Foam::contactPair::matchSides(const bool fatal)
         (
             match
             (
-                pointField(XA, A_.points), A_.N, A_.length, globalB,
+                pointField(XA, A_.points), A_.N, A_.length, globalB, gridB,
                 partnerA, A_.body->name()
             ),
             andOp<bool>()
@@ -776,30 +899,48 @@ bool Foam::contactPair::matchSides(const bool fatal)
         return false;
     }
 
+    // Processor copies of a point (the same reference position), in
+    // increasing order of their gathered index
+    labelList copyUniqueA, copyUniqueB;
+    labelListList uniqueCopiesA, uniqueCopiesB;
+    mergeCopies(globalA, copyUniqueA, uniqueCopiesA);
+    mergeCopies(globalB, copyUniqueB, uniqueCopiesB);
+
+    // The nearest A point of each B point (an octree search; of copies,
+    // the first)
     vectorField NB(B_.points.size());
-    forAll(B_.points, i)
+    if (globalA.size())
     {
-        label ibest = 0;
-        scalar best = GREAT;
-        forAll(globalA, j)
+        treeBoundBox bb(globalA);
+        bb.inflate(1e-4);
+        bb.min() -= point::uniform(ROOTVSMALL);
+        bb.max() += point::uniform(ROOTVSMALL);
+        const indexedOctree<treeDataPoint> tree
+        (
+            treeDataPoint(globalA), bb, 8, 10, 3.0
+        );
+        forAll(B_.points, i)
         {
-            const scalar d = magSqr(globalA[j] - XB[B_.points[i]]);
-            if (d < best)
-            {
-                best = d;
-                ibest = j;
-            }
+            const point& p = XB[B_.points[i]];
+            const pointIndexHit hit
+            (
+                tree.findNearest
+                (
+                    p, sqr(mag(p - bb.min()) + mag(bb.span()))
+                )
+            );
+            NB[i] = globalNA[uniqueCopiesA[copyUniqueA[hit.index()]][0]];
         }
-        NB[i] = globalNA[ibest];
     }
+    const tangentialGrid gridA(globalA, approach, cellSize);
     if
     (
         !returnReduce
         (
             match
             (
-                pointField(XB, B_.points), NB, B_.length, globalA, partnerB,
-                B_.body->name()
+                pointField(XB, B_.points), NB, B_.length, globalA, gridA,
+                partnerB, B_.body->name()
             ),
             andOp<bool>()
         )
@@ -821,17 +962,28 @@ bool Foam::contactPair::matchSides(const bool fatal)
             side->stateWeight[i] = scalarList(1, 1.0);
         }
     }
-    B_.forceFrom = copies(partnerB, globalA);
+    B_.forceFrom.setSize(partnerB.size());
     B_.forceShare.setSize(partnerB.size());
     forAll(partnerB, i)
     {
+        B_.forceFrom[i] = uniqueCopiesA[copyUniqueA[partnerB[i]]];
         B_.forceShare[i] = scalarList(B_.forceFrom[i].size(), 1.0);
     }
+    buildExchange();
     return true;
 }
 
 
 Foam::List<Foam::contactPair::pointData> Foam::contactPair::gatherData
+(
+    const contactSide& side
+) const
+{
+    return allGather(localData(side));
+}
+
+
+Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
 (
     const contactSide& side
 ) const
@@ -871,7 +1023,70 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::gatherData
         }
         local[i] = pointData{x[p], v[p], t, n, Lambda, side.length[i]};
     }
-    return allGather(local);
+    return local;
+}
+
+
+template<class T>
+Foam::List<T> Foam::contactPair::exchanged
+(
+    const contactSide& side,
+    List<T> values
+) const
+{
+    (&side == &A_ ? toB_ : toA_)->distribute(values);
+    return values;
+}
+
+
+void Foam::contactPair::buildExchange()
+{
+    // mapDistribute's compact numbering: this processor's values first (at
+    // their local indices), then the remote ones referred to, so that in
+    // serial the exchanged list is the local one
+    auto build = [](const label localSize, List<labelListList*> lists)
+    {
+        label n = 0;
+        for (const labelListList* l : lists)
+        {
+            n += l->size();
+        }
+        labelListList rows(n);
+        n = 0;
+        for (labelListList* l : lists)
+        {
+            for (labelList& row : *l)
+            {
+                rows[n++].transfer(row);
+            }
+        }
+        List<Map<label>> compactMap;
+        autoPtr<mapDistribute> map
+        (
+            new mapDistribute(globalIndex(localSize), rows, compactMap)
+        );
+        n = 0;
+        for (labelListList* l : lists)
+        {
+            for (labelList& row : *l)
+            {
+                row.transfer(rows[n++]);
+            }
+        }
+        return map;
+    };
+
+    toA_ = build(B_.points.size(), {&A_.stateFrom});
+    toB_ = build(A_.points.size(), {&B_.stateFrom, &B_.forceFrom});
+    if (useAMI_)
+    {
+        label nPairs = 0;
+        for (const labelList& from : A_.stateFrom)
+        {
+            nPairs += from.size();
+        }
+        pairsToB_ = build(nPairs, {&B_.pairIndex});
+    }
 }
 
 
@@ -1070,6 +1285,7 @@ Foam::contactPair::contactPair
     AMIUpdate_(dict.getOrDefault<scalar>("AMIUpdate", 0.1)),
     nMappings_(0),
     mappingTime_(0),
+    wallTime_(0),
     maxPenetration_(0),
     deltaT_(GREAT),
     stage_(0)
@@ -1324,10 +1540,9 @@ void Foam::contactPair::restartMapping(const IOdictionary& state)
 
     // Which points the pair holds closed (their pairs stay closed while
     // the gap is below holdTolerance)
-    const label offsetA = localOffset(A_.points.size());
     forAll(A_.points, i)
     {
-        A_.closed[i] = closedA[surfaceA_.copyUnique[offsetA + i]];
+        A_.closed[i] = closedA[surfaceA_.copyUnique[A_.offset + i]];
     }
 }
 
@@ -1340,8 +1555,6 @@ void Foam::contactPair::addNonMatchingFluxes()
     // every pair solution satisfies both sides' characteristic relations,
     // so the averages do too (each side's boundary is consistent), and the
     // two surfaces share one interface velocity field
-    const label offsetA = localOffset(A_.points.size());
-    const label offsetB = localOffset(B_.points.size());
     label nPairs = 0;
     forAll(A_.points, i)
     {
@@ -1353,7 +1566,7 @@ void Foam::contactPair::addNonMatchingFluxes()
     nPairs = 0;
     forAll(A_.points, i)
     {
-        const pointData& a = dataA_[offsetA + i];
+        const pointData& a = dataA_[i];
         const labelList& from = A_.stateFrom[i];
         const scalarList& w = A_.stateWeight[i];
         A_.touching[i] = false;
@@ -1408,10 +1621,11 @@ void Foam::contactPair::addNonMatchingFluxes()
 
     // A's forces: its tractions integrated over its sub-faces
     A_.body->residual().power += addSideFluxes(A_, true);
-    const vectorField forceA(allGather(A_.force));
-    const vectorField tAll(allGather(tPair));
-    const vectorField vBAll(allGather(vBPair));
-    B_.touching = byMajority(B_, B_.pairIndex, allGather(touchingPairs));
+    const List<vector> forceA(exchanged(A_, A_.force));
+    const List<vector> tAll(exchangedPairs(tPair));
+    const List<vector> vBAll(exchangedPairs(vBPair));
+    B_.touching =
+        byMajority(B_, B_.pairIndex, exchangedPairs(touchingPairs));
 
     // B: its pairs' solutions averaged over its cell for its velocity (and
     // the power), its shares of A's forces for its momentum, so that the
@@ -1420,7 +1634,7 @@ void Foam::contactPair::addNonMatchingFluxes()
     vectorField FB(B_.points.size(), Zero);
     forAll(B_.points, i)
     {
-        const pointData& b = dataB_[offsetB + i];
+        const pointData& b = dataB_[i];
         const labelList& pairs = B_.pairIndex[i];
         const scalarList& w = B_.stateWeight[i];
         B_.tC[i] = Zero;
@@ -1467,17 +1681,15 @@ void Foam::contactPair::addNonMatchingFluxes()
 
 void Foam::contactPair::addFluxes()
 {
-    dataA_ = gatherData(A_);
-    dataB_ = gatherData(B_);
+    const scopeTimer timer(wallTime_);
+    dataA_ = exchangeData(A_);
+    dataB_ = exchangeData(B_);
     if (useAMI_)
     {
         addNonMatchingFluxes();
         ++stage_;
         return;
     }
-
-    const label offsetA = localOffset(A_.points.size());
-    const label offsetB = localOffset(B_.points.size());
 
     // Pairs closed at the start of the step, and open ones shutting their
     // gap in this stage, move with their Riemann velocities, also when
@@ -1491,7 +1703,7 @@ void Foam::contactPair::addFluxes()
     pointData partner;
     forAll(A_.points, i)
     {
-        const pointData& a = dataA_[offsetA + i];
+        const pointData& a = dataA_[i];
         scalar allowance = GREAT;
         if (partnerData(A_, i, dataB_, partner))
         {
@@ -1520,7 +1732,7 @@ void Foam::contactPair::addFluxes()
     }
     forAll(B_.points, i)
     {
-        const pointData& b = dataB_[offsetB + i];
+        const pointData& b = dataB_[i];
         scalar allowance = GREAT;
         if (partnerData(B_, i, dataA_, partner))
         {
@@ -1554,7 +1766,7 @@ void Foam::contactPair::addFluxes()
     B_.body->residual().power += addSideFluxes(B_, false);
     ++stage_;
 
-    const vectorField forceA(allGather(A_.force));
+    const List<vector> forceA(exchanged(A_, A_.force));
     List<vector>& RpB = B_.body->residual().momentum;
     const scalarField& wB = B_.body->dual().pointWeights();
     forAll(B_.points, i)
@@ -1573,6 +1785,7 @@ void Foam::contactPair::addFluxes()
 
 void Foam::contactPair::startStep(const scalar dt)
 {
+    const scopeTimer timer(wallTime_);
     deltaT_ = dt;
     stage_ = 0;
 
@@ -1581,8 +1794,8 @@ void Foam::contactPair::startStep(const scalar dt)
         mapByAMI();
     }
 
-    const List<pointData> a(gatherData(A_));
-    const List<pointData> b(gatherData(B_));
+    const List<pointData> a(exchangeData(A_));
+    const List<pointData> b(exchangeData(B_));
 
     if (useAMI_)
     {
@@ -1591,11 +1804,10 @@ void Foam::contactPair::startStep(const scalar dt)
         // its pairs is.  The two sides' points do not move in lock-step,
         // so the pairs of a closed point stay closed while their gap is
         // below holdTolerance; tension still releases them at once
-        const label offsetA = localOffset(A_.points.size());
         DynamicList<scalar> closedPairs;
         forAll(A_.points, i)
         {
-            const pointData& da = a[offsetA + i];
+            const pointData& da = a[i];
             const labelList& from = A_.stateFrom[i];
             const scalarList& w = A_.stateWeight[i];
             const scalar tol =
@@ -1615,7 +1827,7 @@ void Foam::contactPair::startStep(const scalar dt)
             A_.closed[i] = (fraction > 0.5);
         }
         B_.closed =
-            byMajority(B_, B_.pairIndex, allGather(scalarField(closedPairs)));
+            byMajority(B_, B_.pairIndex, exchangedPairs(closedPairs));
         return;
     }
 
@@ -1624,12 +1836,11 @@ void Foam::contactPair::startStep(const scalar dt)
     // that a B point never receives forces from A as open or moves with A
     // as closed on a verdict of its own: for a matched pair both points
     // then have the same flag
-    const label offsetA = localOffset(A_.points.size());
-    scalarField closedA(A_.points.size(), 0.0);
+    List<scalar> closedA(A_.points.size(), 0.0);
     pointData partner;
     forAll(A_.points, i)
     {
-        const pointData& da = a[offsetA + i];
+        const pointData& da = a[i];
         A_.closed[i] = false;
         A_.gap0[i] = GREAT;
         if (partnerData(A_, i, b, partner))
@@ -1639,16 +1850,15 @@ void Foam::contactPair::startStep(const scalar dt)
         }
         closedA[i] = A_.closed[i];
     }
-    B_.closed = byMajority(B_, B_.stateFrom, allGather(closedA));
+    B_.closed = byMajority(B_, B_.stateFrom, exchanged(A_, closedA));
 
     // B's own gaps (its closing allowances)
-    const label offsetB = localOffset(B_.points.size());
     forAll(B_.points, i)
     {
         B_.gap0[i] = GREAT;
         if (partnerData(B_, i, a, partner))
         {
-            B_.gap0[i] = pairGap(partner, b[offsetB + i]);
+            B_.gap0[i] = pairGap(partner, b[i]);
         }
     }
 }
@@ -1658,7 +1868,7 @@ Foam::boolList Foam::contactPair::byMajority
 (
     const contactSide& side,
     const labelListList& index,
-    const scalarField& flags
+    const UList<scalar>& flags
 )
 {
     boolList result(side.points.size());
@@ -1694,8 +1904,9 @@ Foam::label Foam::contactPair::localOffset(const label localSize)
 
 Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
 {
-    const List<pointData> a(gatherData(A_));
-    const List<pointData> b(gatherData(B_));
+    const scopeTimer timer(wallTime_);
+    const List<pointData> a(exchangeData(A_));
+    const List<pointData> b(exchangeData(B_));
 
     scalar dt = GREAT;
     auto limit = [&](const pointData& da, const pointData& db)
@@ -1715,25 +1926,23 @@ Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
     if (useAMI_)
     {
         // Every overlap pair between its two points' own states
-        const label offsetA = localOffset(A_.points.size());
         forAll(A_.points, i)
         {
             for (const label k : A_.stateFrom[i])
             {
-                limit(a[offsetA + i], b[k]);
+                limit(a[i], b[k]);
             }
         }
         return returnReduce(dt, minOp<scalar>());
     }
 
     // A's points against their matched partners
-    const label offsetA = localOffset(A_.points.size());
     pointData partner;
     forAll(A_.points, i)
     {
         if (partnerData(A_, i, b, partner))
         {
-            limit(a[offsetA + i], partner);
+            limit(a[i], partner);
         }
     }
     reduce(dt, minOp<scalar>());
@@ -1767,6 +1976,31 @@ void Foam::contactPair::describe(Ostream& os) const
     else
     {
         os  << ", matching point for point";
+    }
+    if (Pstream::parRun())
+    {
+        // Values each stage moves between processors: the remote partner
+        // values received (gathering both surfaces onto every processor
+        // would move every other processor's values to each)
+        label received =
+            toA_->constructSize() - B_.points.size()
+          + toB_->constructSize() - A_.points.size();
+        label all = A_.points.size() + B_.points.size();
+        if (useAMI_)
+        {
+            label nPairs = 0;
+            for (const labelList& from : A_.stateFrom)
+            {
+                nPairs += from.size();
+            }
+            received += pairsToB_->constructSize() - nPairs;
+            all += nPairs;
+        }
+        reduce(received, sumOp<label>());
+        reduce(all, sumOp<label>());
+        os  << nl << "    processor exchange: " << received
+            << " remote point and pair values per stage (gathering the"
+            << " surfaces would move " << (Pstream::nProcs() - 1)*all << ")";
     }
     os  << nl;
 }

@@ -393,7 +393,7 @@ bool Foam::contactPair::partnerData
         return true;
     }
     const scalarList& w = side.stateWeight[i];
-    partner = pointData{Zero, Zero, Zero, Zero, 0, 0};
+    partner = pointData{Zero, Zero, Zero, Zero, 0, 0, 0};
     forAll(from, m)
     {
         const pointData& d = other[from[m]];
@@ -403,6 +403,7 @@ bool Foam::contactPair::partnerData
         partner.n += w[m]*d.n;
         partner.Lambda += w[m]*d.Lambda;
         partner.length += w[m]*d.length;
+        partner.SigmaJ += w[m]*d.SigmaJ;
     }
     partner.n = normalised(partner.n);
     return true;
@@ -1021,7 +1022,10 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
         {
             n = normalised(Pr & N);
         }
-        local[i] = pointData{x[p], v[p], t, n, Lambda, side.length[i]};
+        local[i] = pointData
+        {
+            x[p], v[p], t, n, Lambda, side.length[i], body.SigmaJ()[p]
+        };
     }
     return local;
 }
@@ -1146,12 +1150,12 @@ bool Foam::contactPair::pairState
     contactRiemannSolver::side L
     {
         tA & n, (vA & n) - w, mA.rho(), mA.cp(), a.Lambda,
-        mA.hugoniot() ? mA.hugoniotS() : 0
+        mA.hugoniot() ? mA.hugoniotS() : 0, a.SigmaJ
     };
     contactRiemannSolver::side R
     {
         tB & n, vB & n, mB.rho(), mB.cp(), b.Lambda,
-        mB.hugoniot() ? mB.hugoniotS() : 0
+        mB.hugoniot() ? mB.hugoniotS() : 0, b.SigmaJ
     };
     scalar vnC, tnC;
     riemann_->normalState(L, R, vnC, tnC);
@@ -1186,7 +1190,12 @@ bool Foam::contactPair::pairState
     {
         // The stick state; the friction law decides whether it holds or
         // the sides slip with the traction it allows
-        const vector vtStick((ZA*vAt + ZB*vBt + tBt - tAt)/(ZA + ZB));
+        const vector vtStick
+        (
+            riemann_->tangentialTractionJump()
+          ? (ZA*vAt + ZB*vBt + tBt - tAt)/(ZA + ZB)
+          : (ZA*vAt + ZB*vBt)/(ZA + ZB)
+        );
         const vector ttStick
         (
             (ZA*ZB/(ZA + ZB))*(tAt/ZA + tBt/ZB + vBt - vAt)

@@ -10,6 +10,9 @@ Description
     (doc/method.md, section 3):
       - acoustic contact stick between different impedances (normal and
         tangential), its symmetric (homogeneous) limit;
+      - the pressure-dominated contact stick: only the Sigma_J jump moves
+        the velocity, the traction is acoustic; with volumetric tractions
+        (t_n = Sigma_J Lambda) it is the acoustic state;
       - the Hugoniot check: two identical bars, c = 100, rho0 = 0.01,
         v0 = 100, s = 1: v^C = 50, t_n^C = -75; s -> 0 gives the acoustic
         answer; an expansive jump uses the acoustic solver;
@@ -28,6 +31,7 @@ Description
 #include "acousticFormulas.H"
 #include "acoustic.H"
 #include "hugoniot.H"
+#include "pressureDominated.H"
 #include "IStringStream.H"
 
 using namespace Foam;
@@ -71,6 +75,45 @@ int main(int argc, char *argv[])
         // 1/2 (tL + tR) + Zp/2 dv_n n + Zs/2 dv_t
         check("t_x", tC.x(), -2 + 1*(-2));
         check("t_y", tC.y(), 1 + 0.5*2);
+    }
+
+    Info<< "Pressure-dominated contact stick, Z_L = 2, Z_R = 3" << endl;
+    {
+        // The acoustic case above with area ratios 1.2 / 0.8 and volumetric
+        // stresses Sigma_J -0.8 / -2.5: only their jump moves the velocity,
+        // v = (2*5 + 3*1 + (-2.5 + 0.8)*(1.2 + 0.8)/2)/5 = 11.3/5; the
+        // traction is the acoustic one
+        side L{-1, 5, 1, 2, 1.2, 0, -0.8}, R{-2, 1, 1, 3, 0.8, 0, -2.5};
+        scalar v, t;
+        contactRiemannSolvers::pressureDominated::solve(L, R, v, t);
+        check("v_n^C", v, 11.3/5.0);
+        check("t_n^C", t, 6.0/5.0*(-0.5 - 2.0/3.0 - 4.0));
+
+        // Volumetric tractions (t_n = Sigma_J Lambda, the same Lambda): the
+        // acoustic state, velocity and traction
+        const scalar Lambda = 1.1;
+        side Lp{-2*Lambda, 3, 2, 1.5, Lambda, 0, -2};
+        side Rp{-0.5*Lambda, -1, 1, 2, Lambda, 0, -0.5};
+        scalar va, ta;
+        contactRiemannSolvers::acoustic::solve(Lp, Rp, va, ta);
+        contactRiemannSolvers::pressureDominated::solve(Lp, Rp, v, t);
+        check("volumetric tractions: v_n^C acoustic", v, va);
+        check("volumetric tractions: t_n^C acoustic", t, ta);
+
+        const dictionary dict;
+        check
+        (
+            "stick velocity without the tangential traction jump",
+            contactRiemannSolvers::pressureDominated(dict)
+           .tangentialTractionJump(),
+            0
+        );
+        check
+        (
+            "acoustic stick velocity with it",
+            contactRiemannSolvers::acoustic(dict).tangentialTractionJump(),
+            1
+        );
     }
 
     Info<< "Hugoniot check: identical bars, c 100, rho 0.01, v0 100, s 1" << endl;

@@ -110,11 +110,13 @@ class tangentialGrid
 
     labelPair cell(const point& p) const
     {
-        return labelPair
-        (
-            label(std::floor((p & t1_)/width_)),
-            label(std::floor((p & t2_)/width_))
-        );
+        // (clamped to the label range: cells beyond share a cell, which
+        // only adds candidates)
+        auto index = [this](const scalar x)
+        {
+            return label(std::floor(min(max(x/width_, -1e9), 1e9)));
+        };
+        return labelPair(index(p & t1_), index(p & t2_));
     }
 
 public:

@@ -904,10 +904,9 @@ bool Foam::contactPair::matchSides(const bool fatal)
 
     // Processor copies of a point (the same reference position), in
     // increasing order of their gathered index
-    labelList copyUniqueA, copyUniqueB;
-    labelListList uniqueCopiesA, uniqueCopiesB;
+    labelList copyUniqueA;
+    labelListList uniqueCopiesA;
     mergeCopies(globalA, copyUniqueA, uniqueCopiesA);
-    mergeCopies(globalB, copyUniqueB, uniqueCopiesB);
 
     // The nearest A point of each B point (an octree search; of copies,
     // the first)
@@ -1045,6 +1044,17 @@ Foam::List<T> Foam::contactPair::exchanged
 }
 
 
+Foam::label Foam::contactPair::nPairsA() const
+{
+    label n = 0;
+    for (const labelList& from : A_.stateFrom)
+    {
+        n += from.size();
+    }
+    return n;
+}
+
+
 void Foam::contactPair::buildExchange()
 {
     // mapDistribute's compact numbering: this processor's values first (at
@@ -1086,12 +1096,7 @@ void Foam::contactPair::buildExchange()
     toB_ = build(A_.points.size(), {&B_.stateFrom, &B_.forceFrom});
     if (useAMI_)
     {
-        label nPairs = 0;
-        for (const labelList& from : A_.stateFrom)
-        {
-            nPairs += from.size();
-        }
-        pairsToB_ = build(nPairs, {&B_.pairIndex});
+        pairsToB_ = build(nPairsA(), {&B_.pairIndex});
     }
 }
 
@@ -1566,11 +1571,7 @@ void Foam::contactPair::addNonMatchingFluxes()
     // every pair solution satisfies both sides' characteristic relations,
     // so the averages do too (each side's boundary is consistent), and the
     // two surfaces share one interface velocity field
-    label nPairs = 0;
-    forAll(A_.points, i)
-    {
-        nPairs += A_.stateFrom[i].size();
-    }
+    label nPairs = nPairsA();
     vectorField tPair(nPairs), vBPair(nPairs);
     scalarField touchingPairs(nPairs, 0.0);
     vector vA, vOther;
@@ -1999,13 +2000,8 @@ void Foam::contactPair::describe(Ostream& os) const
         label all = A_.points.size() + B_.points.size();
         if (useAMI_)
         {
-            label nPairs = 0;
-            for (const labelList& from : A_.stateFrom)
-            {
-                nPairs += from.size();
-            }
-            received += pairsToB_->constructSize() - nPairs;
-            all += nPairs;
+            received += pairsToB_->constructSize() - nPairsA();
+            all += nPairsA();
         }
         reduce(received, sumOp<label>());
         reduce(all, sumOp<label>());

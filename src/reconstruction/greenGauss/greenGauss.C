@@ -169,9 +169,16 @@ void Foam::greenGaussGradient
     zero = 0.0;
     G = zero;
 
+    const label nEdges = es.size();
     forAll(es, e)
     {
         const label i = es[e], j = ee[e];
+        if (e + edgePrefetchDistance < nEdges)
+        {
+            const label jAhead = ee[e + edgePrefetchDistance];
+            prefetchObject(q[jAhead]);
+            prefetchObject<1>(G[jAhead]);
+        }
         const vector C(0.5*Ae[e]*Ne[e]);
         const scalar Cx = C.x(), Cy = C.y(), Cz = C.z();
         const scalar* __restrict__ qi = q[i].cdata();

@@ -614,6 +614,8 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
 
     // One edge's upwind fluxes from its two midpoint states, added to the
     // residual lists Rp, RF, RJ
+    // (Inlined into each loop: as a call, each edge waited for the
+    // previous one's square root and division)
     auto addEdgeFlux =
     [&]
     (
@@ -622,7 +624,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         const tensor& PL, const tensor& PR,
         const scalar SJL, const scalar SJR,
         List<vector>& Rp, List<tensor>& RF, List<scalar>& RJ
-    )
+    ) __attribute__((always_inline))
     {
         const label i = es[e], j = ee[e];
         const vector& N = Ne[e];
@@ -630,11 +632,14 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
 
         // Spatial normal from the average area map
         const vector hN(0.5*((H[i] & N) + (H[j] & N)));
-        const vector n(hN/mag(hN));
+        const scalar hN2 = hN & hN;
+        const scalar invMagHN = 1.0/std::sqrt(hN2);
+        const vector n(invMagHN*hN);
+        const scalar magHN = hN2*invMagHN;
 
         // The upwind traction (the body's interior Riemann solver)
         const vector tL(PL & N), tR(PR & N);
-        const vector tC(A*traction(tL, tR, vL, vR, n, mag(hN)));
+        const vector tC(A*traction(tL, tR, vL, vR, n, magHN));
         Rp[i] += tC;
         Rp[j] -= tC;
 
@@ -662,7 +667,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             shockMass > 0
           ? 0.5/interiorRiemannSolvers::hugoniot::normalImpedance
             (
-                ZpBody, shockMass, vL, vR, n, mag(hN)
+                ZpBody, shockMass, vL, vR, n, magHN
             )
           : vStabP;
         const vector vC
@@ -675,7 +680,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
 
         if (JStabilisation)
         {
-            const scalar dS = Sfactor*A*(hN & hN)*(SJR - SJL);
+            const scalar dS = Sfactor*A*hN2*(SJR - SJL);
             RJ[i] += dS;
             RJ[j] -= dS;
         }
@@ -698,9 +703,21 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     if (scheme_->secondOrder())
     {
         fluxState qL, qR;
+        const label nEdges = es.size();
         forAll(es, e)
         {
             const label i = es[e], j = ee[e];
+            // (the far end's data, the slowest loads of an edge, asked
+            // for ahead: fluxState.H)
+            if (e + edgePrefetchDistance < nEdges)
+            {
+                const label jAhead = ee[e + edgePrefetchDistance];
+                prefetchObject(G_[jAhead]);
+                prefetchObject(q_[jAhead]);
+                prefetchObject(H[jAhead]);
+                prefetchObject<1>(residual_.F[jAhead]);
+                prefetchObject<1>(residual_.momentum[jAhead]);
+            }
             const vector halfdX(0.5*(X[j] - X[i]));
             limiter_->midpointStates
             (

@@ -1228,7 +1228,7 @@ bool Foam::contactPair::pairState
 }
 
 
-Foam::scalar Foam::contactPair::addSideFluxes
+void Foam::contactPair::addSideFluxes
 (
     contactSide& side,
     const bool tractions
@@ -1245,7 +1245,6 @@ Foam::scalar Foam::contactPair::addSideFluxes
     R.boundarySet[side.patchi] = true;
 
     side.force = Zero;
-    scalar power = 0;
     forAll(sf.point, s)
     {
         const label i = side.sfLocal[s];
@@ -1254,18 +1253,8 @@ Foam::scalar Foam::contactPair::addSideFluxes
         const scalar w = sf.nbrWeight[s];
         const vector tC((1 - 2*w)*side.tC[i] + w*(side.tC[ip] + side.tC[in]));
         const vector vC((1 - 2*w)*side.vC[i] + w*(side.vC[ip] + side.vC[in]));
-        const scalar magA = mag(sf.area[s]);
-
-        // Quadrature of the pointwise power, as for boundary conditions
-        // (solidBoundaryCondition::addFluxes): frictionless matched contact
-        // then exchanges energy between the bodies without creating any
-        const scalar pC =
-            (1 - 2*w)*(side.tC[i] & side.vC[i])
-          + w*((side.tC[ip] & side.vC[ip]) + (side.tC[in] & side.vC[in]));
-
-        side.force[i] += magA*tC;
+        side.force[i] += mag(sf.area[s])*tC;
         RF[sf.point[s]] += vC*sf.area[s];
-        power += magA*pC;
         if (keepStates)
         {
             tB[s] = tC;
@@ -1279,7 +1268,61 @@ Foam::scalar Foam::contactPair::addSideFluxes
             Rp[side.points[i]] += side.force[i];
         }
     }
-    return power;
+}
+
+
+Foam::List<Foam::vector> Foam::contactPair::tractionForcesA() const
+{
+    const dualMesh::patchSubFaces& sf =
+        A_.body->dual().subFaces(A_.patchi);
+    List<vector> force(A_.points.size(), Zero);
+    forAll(sf.point, s)
+    {
+        const scalar w = sf.nbrWeight[s];
+        const scalar magA = mag(sf.area[s]);
+        const label i = A_.sfLocal[s];
+        const label ip = A_.sfPrev[s];
+        const label in = A_.sfNext[s];
+        force[i] += ((1 - 2*w)*magA)*A_.tC[i];
+        force[ip] += (w*magA)*A_.tC[ip];
+        force[in] += (w*magA)*A_.tC[in];
+    }
+    return force;
+}
+
+
+Foam::scalar Foam::contactPair::integrateOverA
+(
+    const UList<scalar>& density
+) const
+{
+    const dualMesh::patchSubFaces& sf =
+        A_.body->dual().subFaces(A_.patchi);
+    scalar sum = 0;
+    forAll(sf.point, s)
+    {
+        const label i = A_.sfLocal[s];
+        const scalar w = sf.nbrWeight[s];
+        sum +=
+            mag(sf.area[s])
+           *(
+                (1 - 2*w)*density[i]
+              + w*(density[A_.sfPrev[s]] + density[A_.sfNext[s]])
+            );
+    }
+    return sum;
+}
+
+
+void Foam::contactPair::addPairPower
+(
+    const UList<scalar>& powerA,
+    const UList<scalar>& powerB
+)
+{
+    // (Summed over the processors with each body's other powers)
+    A_.body->residual().power += integrateOverA(powerA);
+    B_.body->residual().power -= integrateOverA(powerB);
 }
 
 
@@ -1574,6 +1617,8 @@ void Foam::contactPair::addNonMatchingFluxes()
     label nPairs = nPairsA();
     vectorField tPair(nPairs), vBPair(nPairs);
     scalarField touchingPairs(nPairs, 0.0);
+    scalarField powerA(A_.points.size(), 0.0);
+    scalarField powerB(A_.points.size(), 0.0);
     vector vA, vOther;
     nPairs = 0;
     forAll(A_.points, i)
@@ -1588,6 +1633,7 @@ void Foam::contactPair::addNonMatchingFluxes()
             (
                 false, GREAT, a, mirrored(a), A_.tC[i], A_.vC[i], vOther
             );
+            powerA[i] = A_.tC[i] & A_.vC[i];
             continue;
         }
         A_.tC[i] = Zero;
@@ -1607,6 +1653,8 @@ void Foam::contactPair::addNonMatchingFluxes()
             fraction += touching*w[m];
             A_.tC[i] += w[m]*tPair[nPairs];
             A_.vC[i] += w[m]*vA;
+            powerA[i] += w[m]*(tPair[nPairs] & vA);
+            powerB[i] += w[m]*(tPair[nPairs] & vBPair[nPairs]);
             ++nPairs;
         }
         // Closed pairs always touch, so a closed point does too
@@ -1632,8 +1680,9 @@ void Foam::contactPair::addNonMatchingFluxes()
     reduce(maxPenetration_, maxOp<scalar>());
 
     // A's forces: its tractions integrated over its sub-faces
-    A_.body->residual().power += addSideFluxes(A_, true);
-    const List<vector> forceA(exchanged(A_, A_.force));
+    addSideFluxes(A_, true);
+    addPairPower(powerA, powerB);
+    const List<vector> forceA(exchanged(A_, tractionForcesA()));
     const List<vector> tAll(exchangedPairs(tPair));
     const List<vector> vBAll(exchangedPairs(vBPair));
     B_.touching =
@@ -1680,7 +1729,7 @@ void Foam::contactPair::addNonMatchingFluxes()
             );
         }
     }
-    B_.body->residual().power += addSideFluxes(B_, false);
+    addSideFluxes(B_, false);
 
     List<vector>& RpB = B_.body->residual().momentum;
     const scalarField& wB = B_.body->dual().pointWeights();
@@ -1713,6 +1762,8 @@ void Foam::contactPair::addFluxes()
     // over).  Other open pairs move with their nodal velocities.
     vector vOther;
     pointData partner;
+    scalarField powerA(A_.points.size());
+    scalarField powerB(A_.points.size());
     forAll(A_.points, i)
     {
         const pointData& a = dataA_[i];
@@ -1729,6 +1780,8 @@ void Foam::contactPair::addFluxes()
         (
             A_.closed[i], allowance, a, partner, A_.tC[i], A_.vC[i], vOther
         );
+        powerA[i] = A_.tC[i] & A_.vC[i];
+        powerB[i] = A_.tC[i] & vOther;
         if (A_.touching[i])
         {
             A_.body->residual().prescribeSurfaceVelocity
@@ -1774,11 +1827,12 @@ void Foam::contactPair::addFluxes()
     // of its partners on A (summed over the processor copies of a partner,
     // shared by B's processor copies of the point through the point
     // weights)
-    A_.body->residual().power += addSideFluxes(A_, true);
-    B_.body->residual().power += addSideFluxes(B_, false);
+    addSideFluxes(A_, true);
+    addSideFluxes(B_, false);
+    addPairPower(powerA, powerB);
     ++stage_;
 
-    const List<vector> forceA(exchanged(A_, A_.force));
+    const List<vector> forceA(exchanged(A_, tractionForcesA()));
     List<vector>& RpB = B_.body->residual().momentum;
     const scalarField& wB = B_.body->dual().pointWeights();
     forAll(B_.points, i)

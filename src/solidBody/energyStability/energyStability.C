@@ -5,6 +5,7 @@
 
 #include "energyStability.H"
 #include "dualMesh.H"
+#include "bitSet.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -13,7 +14,9 @@ Foam::energyStability::energyStability(const dualMesh& dual, const bool JLaw)
     edgeAreaSum_(dual.mesh().nPoints(), Zero),
     edgeAreaMag_(dual.mesh().nPoints(), Zero),
     JLaw_(JLaw),
-    firstOrder_()
+    boundaryPoints_(),
+    asideMomentum_(),
+    asideF_()
 {
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
@@ -26,17 +29,45 @@ Foam::energyStability::energyStability(const dualMesh& dual, const bool JLaw)
         edgeAreaMag_[es[e]] += Ae[e];
         edgeAreaMag_[ee[e]] += Ae[e];
     }
+
+    // Boundary conditions and contact pairs add to the points of the
+    // sub-faces of the physical patches only
+    bitSet onBoundary(dual.mesh().nPoints());
+    const polyBoundaryMesh& patches = dual.mesh().boundaryMesh();
+    forAll(patches, patchi)
+    {
+        if (!patches[patchi].coupled())
+        {
+            for (const label i : dual.subFaces(patchi).point)
+            {
+                onBoundary.set(i);
+            }
+        }
+    }
+    boundaryPoints_ = onBoundary.sortedToc();
+    asideMomentum_.setSize(boundaryPoints_.size());
+    asideF_.setSize(boundaryPoints_.size());
 }
 
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::energyStability::setAside(const stageResidual& R)
+{
+    forAll(boundaryPoints_, b)
+    {
+        asideMomentum_[b] = R.momentum[boundaryPoints_[b]];
+        asideF_[b] = R.F[boundaryPoints_[b]];
+    }
+}
+
+
 Foam::vector2D Foam::energyStability::production
 (
     const stageResidual& R,
-    const List<vector>& v,
-    const List<tensor>& P,
-    const List<scalar>& SigmaJ
+    const UList<vector>& v,
+    const UList<tensor>& P,
+    const UList<scalar>& SigmaJ
 ) const
 {
     vector2D prod(Zero);
@@ -46,6 +77,15 @@ Foam::vector2D Foam::energyStability::production
             (v[i] & R.momentum[i]) + (P[i] && R.F[i])
           - (v[i] & (P[i] & edgeAreaSum_[i]));
         prod.y() += mag(v[i])*mag(P[i])*edgeAreaMag_[i];
+    }
+    forAll(boundaryPoints_, b)
+    {
+        const label i = boundaryPoints_[b];
+        prod.x() -= (v[i] & asideMomentum_[b]) + (P[i] && asideF_[b]);
+        // (what is taken out counts in the rounding: at rest against a
+        // wall, unstressed, only the wall's fluxes are not zero)
+        prod.y() +=
+            mag(v[i])*mag(asideMomentum_[b]) + mag(P[i])*mag(asideF_[b]);
     }
     if (JLaw_)
     {

@@ -612,18 +612,18 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         limiter_->limit(dual_, q_, G_);
     }
 
-    // One edge's upwind fluxes from its two midpoint states, added to the
-    // residual lists Rp, RF, RJ
+    // One edge's upwind fluxes from its two midpoint states: the traction
+    // and the velocity times the area (tC, vCA), and the J flux dS
     // (Inlined into each loop: as a call, each edge waited for the
     // previous one's square root and division)
-    auto addEdgeFlux =
+    auto edgeFlux =
     [&]
     (
         const label e,
         const vector& vL, const vector& vR,
         const tensor& PL, const tensor& PR,
         const scalar SJL, const scalar SJR,
-        List<vector>& Rp, List<tensor>& RF, List<scalar>& RJ
+        vector& tC, vector& vCA, scalar& dS
     ) __attribute__((always_inline))
     {
         const label i = es[e], j = ee[e];
@@ -639,9 +639,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
 
         // The upwind traction (the body's interior Riemann solver)
         const vector tL(PL & N), tR(PR & N);
-        const vector tC(A*traction(tL, tR, vL, vR, n, magHN));
-        Rp[i] += tC;
-        Rp[j] -= tC;
+        tC = A*traction(tL, tR, vL, vR, n, magHN);
 
         // The upwind (Riemann) velocity: average plus the traction jump
         // over twice the impedances, weighted by how much of the points'
@@ -670,43 +668,101 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
                 ZpBody, shockMass, vL, vR, n, magHN
             )
           : vStabP;
-        const vector vC
-        (
-            0.5*(vL + vR) + (vStabN*dtn)*n + vStabS*(dt - dtn*n)
-        );
-        const tensor vN(A*vC*N);
+        vCA = A*(0.5*(vL + vR) + (vStabN*dtn)*n + vStabS*(dt - dtn*n));
+        dS = JStabilisation ? Sfactor*A*hN2*(SJR - SJL) : 0;
+    };
+
+    // Add one edge's fluxes, times w, to the residuals
+    List<vector>& Rp = residual_.momentum;
+    List<tensor>& RF = residual_.F;
+    List<scalar>& RJ = residual_.J;
+    auto addFlux =
+    [&]
+    (
+        const label e,
+        const vector& tC, const vector& vCA, const scalar dS
+    ) __attribute__((always_inline))
+    {
+        const label i = es[e], j = ee[e];
+        const tensor vN(vCA*Ne[e]);
+        Rp[i] += tC;
+        Rp[j] -= tC;
         RF[i] += vN;
         RF[j] -= vN;
-
         if (JStabilisation)
         {
-            const scalar dS = Sfactor*A*hN2*(SJR - SJL);
             RJ[i] += dS;
             RJ[j] -= dS;
         }
     };
 
-    // Energy stability blends the interior residuals only: set the
-    // boundary and contact ones (added before) aside, swapped with the
-    // zeroed workspace
-    if (energyStability_.valid())
+    // The edge's second-order fluxes (from its reconstructed midpoint
+    // states) and its first-order ones (from its points' states)
+    fluxState qL, qR;
+    auto secondOrderFlux =
+    [&]
+    (
+        const label e, vector& tC, vector& vCA, scalar& dS
+    ) __attribute__((always_inline))
     {
-        asideMomentum_.setSize(residual_.momentum.size());
-        asideF_.setSize(residual_.F.size());
-        asideMomentum_ = Zero;
-        asideF_ = Zero;
-        asideMomentum_.swap(residual_.momentum);
-        asideF_.swap(residual_.F);
-    }
+        const label i = es[e], j = ee[e];
+        const vector halfdX(0.5*(X[j] - X[i]));
+        limiter_->midpointStates(q_[i], q_[j], G_[i], G_[j], halfdX, qL, qR);
+        edgeFlux
+        (
+            e,
+            fluxVelocity(qL), fluxVelocity(qR),
+            fluxStress(qL), fluxStress(qR),
+            fluxSigmaJ(qL), fluxSigmaJ(qR),
+            tC, vCA, dS
+        );
+    };
+    auto firstOrderFlux =
+    [&]
+    (
+        const label e, vector& tC, vector& vCA, scalar& dS
+    ) __attribute__((always_inline))
+    {
+        const label i = es[e], j = ee[e];
+        edgeFlux
+        (
+            e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
+            tC, vCA, dS
+        );
+    };
 
-    // Interior fluxes: one pass over the edges
+    // The energy an edge's fluxes produce (energyStability.H)
+    auto production =
+    [&]
+    (
+        const label e,
+        const vector& tC, const vector& vCA, const scalar dS
+    ) __attribute__((always_inline))
+    {
+        const label i = es[e], j = ee[e];
+        return energyStability::edgeProduction
+        (
+            tC, vCA, dS,
+            v_[i], P_[i], SigmaJ_[i], v_[j], P_[j], SigmaJ_[j],
+            Ne[e], Ae[e]
+        );
+    };
+
+    // Interior fluxes: one pass over the edges (energy stability first
+    // keeps the boundary and contact residuals added before)
+    const bool energyStable =
+        energyStability_.valid() && scheme_->secondOrder();
+    if (energyStable)
+    {
+        energyStability_->setAside(residual_);
+    }
+    vector tC, vCA;
+    scalar dS;
     if (scheme_->secondOrder())
     {
-        fluxState qL, qR;
         const label nEdges = es.size();
         forAll(es, e)
         {
-            const label i = es[e], j = ee[e];
             // (the far end's data, the slowest loads of an edge, asked
             // for ahead: fluxState.H)
             if (e + edgePrefetchDistance < nEdges)
@@ -718,51 +774,42 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
                 prefetchObject<1>(residual_.F[jAhead]);
                 prefetchObject<1>(residual_.momentum[jAhead]);
             }
-            const vector halfdX(0.5*(X[j] - X[i]));
-            limiter_->midpointStates
-            (
-                q_[i], q_[j], G_[i], G_[j], halfdX, qL, qR
-            );
-            addEdgeFlux
-            (
-                e,
-                fluxVelocity(qL), fluxVelocity(qR),
-                fluxStress(qL), fluxStress(qR),
-                fluxSigmaJ(qL), fluxSigmaJ(qR),
-                residual_.momentum, residual_.F, residual_.J
-            );
+            secondOrderFlux(e, tC, vCA, dS);
+            addFlux(e, tC, vCA, dS);
         }
     }
     else
     {
         forAll(es, e)
         {
-            const label i = es[e], j = ee[e];
-            addEdgeFlux
-            (
-                e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
-                residual_.momentum, residual_.F, residual_.J
-            );
+            firstOrderFlux(e, tC, vCA, dS);
+            addFlux(e, tC, vCA, dS);
         }
     }
 
     // Energy stability (energyStability.H): blend towards the first-order
-    // interior residuals where the second-order ones produce energy
-    if (energyStability_.valid())
+    // interior fluxes where the second-order ones produce energy
+    if (energyStable)
     {
         const scalar theta = energyStability_->apply
         (
             residual_, v_, P_, SigmaJ_,
-            [&](stageResidual& R0)
+            [&]()
+            {
+                scalar S0 = 0;
+                forAll(es, e)
+                {
+                    firstOrderFlux(e, tC, vCA, dS);
+                    S0 += production(e, tC, vCA, dS);
+                }
+                return S0;
+            },
+            [&](const scalar w)
             {
                 forAll(es, e)
                 {
-                    const label i = es[e], j = ee[e];
-                    addEdgeFlux
-                    (
-                        e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
-                        R0.momentum, R0.F, R0.J
-                    );
+                    firstOrderFlux(e, tC, vCA, dS);
+                    addFlux(e, w*tC, w*vCA, w*dS);
                 }
             }
         );
@@ -771,13 +818,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             ++nEnergyLimited_;
             minEnergyTheta_ = min(minEnergyTheta_, theta);
         }
-        forAll(asideMomentum_, i)
-        {
-            residual_.momentum[i] += asideMomentum_[i];
-            residual_.F[i] += asideF_[i];
-        }
     }
-
 }
 
 

@@ -672,7 +672,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         dS = JStabilisation ? Sfactor*A*hN2*(SJR - SJL) : 0;
     };
 
-    // Add one edge's fluxes, times w, to the residuals
+    // Add one edge's fluxes to the residuals
     List<vector>& Rp = residual_.momentum;
     List<tensor>& RF = residual_.F;
     List<scalar>& RJ = residual_.J;

@@ -575,8 +575,13 @@ bool Foam::contactPair::needsMapping() const
             {
                 d -= w[m]*other[from[m]];
             }
+            // (A point without overlaps remaps on any motion: its partners
+            // may come into reach as the surfaces approach; the AMI finds
+            // no overlap across a gap wide against the faces, and two bars
+            // meshed differently then passed through each other unseen)
             const vector& N = side->N[i];
-            if (mag(d - (d & N)*N) > AMIUpdate_*side->length[i])
+            const vector slide(from.empty() ? d : d - (d & N)*N);
+            if (mag(slide) > AMIUpdate_*side->length[i])
             {
                 slid = true;
                 break;

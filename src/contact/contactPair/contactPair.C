@@ -267,7 +267,6 @@ void Foam::contactPair::setSide
 
     side.tC.setSize(side.points.size(), Zero);
     side.vC.setSize(side.points.size(), Zero);
-    side.force.setSize(side.points.size(), Zero);
     side.closed.setSize(side.points.size(), false);
     side.gap0.setSize(side.points.size(), GREAT);
     side.touching.setSize(side.points.size(), false);
@@ -1249,7 +1248,8 @@ void Foam::contactPair::addSideFluxes
     const bool keepStates = tB.size();
     R.boundarySet[side.patchi] = true;
 
-    side.force = Zero;
+    // (A's integrated forces; B's momentum takes A's traction forces)
+    List<vector> force(tractions ? side.points.size() : 0, Zero);
     forAll(sf.point, s)
     {
         const label i = side.sfLocal[s];
@@ -1258,7 +1258,10 @@ void Foam::contactPair::addSideFluxes
         const scalar w = sf.nbrWeight[s];
         const vector tC((1 - 2*w)*side.tC[i] + w*(side.tC[ip] + side.tC[in]));
         const vector vC((1 - 2*w)*side.vC[i] + w*(side.vC[ip] + side.vC[in]));
-        side.force[i] += mag(sf.area[s])*tC;
+        if (tractions)
+        {
+            force[i] += mag(sf.area[s])*tC;
+        }
         RF[sf.point[s]] += vC*sf.area[s];
         if (keepStates)
         {
@@ -1266,12 +1269,9 @@ void Foam::contactPair::addSideFluxes
             vB[s] = vC;
         }
     }
-    if (tractions)
+    forAll(force, i)
     {
-        forAll(side.points, i)
-        {
-            Rp[side.points[i]] += side.force[i];
-        }
+        Rp[side.points[i]] += force[i];
     }
 }
 

@@ -521,6 +521,15 @@ void Foam::solidBody::startStage()
 namespace
 {
 
+// Shock stabilisation: an edge whose points close at this fraction of the
+// wave speed or more, with a closing jump left by the reconstruction, gets
+// the full normal part of the upwind F flux.  The impact Mach number
+// below which the acoustic contact solver is exact enough (doc/method.md,
+// section 3): the non-linearity of the wave speed that makes shocks, and
+// their post-shock noise, starts there (doc/results.md, "Shocks in
+// non-linear elastic bodies")
+const Foam::scalar shockSensorMach = 0.01;
+
 // The traction of a run-time selected interior Riemann solver (one virtual
 // call per edge)
 struct solverTraction
@@ -591,11 +600,16 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     const bool upwindF = scheme_->FStabilisation();
     const bool JStabilisation = scheme_->JLaw() && !upwindF;
     const scalar Sfactor = 0.5/material_->Zp();
-    const scalar vStabP = upwindF ? 0.5/material_->Zp() : 0;
+    // Shock stabilisation: the normal part of the term, on the edges a
+    // shock is closing (there it takes over its share of the J
+    // stabilisation)
+    const bool shockF = !upwindF && scheme_->shockStabilisation();
+    const scalar shockSensorSpeed = shockSensorMach*material_->cp();
+    const scalar vStabP = upwindF || shockF ? 0.5/material_->Zp() : 0;
     const scalar vStabS =
         upwindF && material_->Zs() > VSMALL ? 0.5/material_->Zs() : 0;
     const scalar ZpBody = material_->Zp();
-    const scalar shockMass = upwindF ? material_->shockMass() : 0;
+    const scalar shockMass = upwindF || shockF ? material_->shockMass() : 0;
 
     if (scheme_->secondOrder())
     {
@@ -649,11 +663,24 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         // coarse meshes many times more than the momentum's upwinding:
         // doc/method.md, section 8)
         vector dt(tR - tL);
-        if (vStabP > 0)
+        scalar w = vStabP > 0 ? 1 : 0;
+        if (shockF)
+        {
+            // The sensor: a jump the reconstruction left closing, at a
+            // closing speed of the points above shockSensorMach of the
+            // wave speed (a shock closes its edges at a good part of the
+            // particle velocity jump and the limiter leaves its jump in
+            // place; smooth waves and bending within elastic limits close
+            // far slower, with reconstructed jumps of either sign)
+            const scalar closing = (v_[i] - v_[j]) & n;
+            w =
+                closing > 0 && ((vL - vR) & n) > 0
+              ? min(1.0, closing/shockSensorSpeed) : 0;
+        }
+        if (w > 0)
         {
             const scalar jump1 = mag((P_[j] - P_[i]) & N);
-            const scalar w =
-                jump1 > VSMALL ? min(1.0, 2*mag(dt)/jump1) : 1.0;
+            w *= jump1 > VSMALL ? min(1.0, 2*mag(dt)/jump1) : 1.0;
             dt *= w;
         }
         const scalar dtn = dt & n;
@@ -669,7 +696,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             )
           : vStabP;
         vCA = A*(0.5*(vL + vR) + (vStabN*dtn)*n + vStabS*(dt - dtn*n));
-        dS = JStabilisation ? Sfactor*A*hN2*(SJR - SJL) : 0;
+        dS = JStabilisation ? (1 - w)*Sfactor*A*hN2*(SJR - SJL) : 0;
     };
 
     // Add one edge's fluxes to the residuals

@@ -26,13 +26,24 @@ Foam::symmetryConstraint::symmetryConstraint
         {
             continue;
         }
-        const vectorField N(dual.patchPointNormals(bc.patchi()));
-        forAll(N, i)
+        // (a patch that folds round an edge, such as the one symmetry
+        // patch on all four sides of a bar, gives its points there both
+        // planes: with the mean normal alone the bar's edge points could
+        // slide along the diagonal, and on tets under finite-strain
+        // compression they did, crushing the struck face: doc/results.md,
+        // "Finite-strain bars on tets")
+        List<FixedList<vector, 3>> planes;
+        labelList nPlanes;
+        dual.patchPointPlanes
+        (
+            bc.patchi(), solidBoundaryCondition::featureAngle, planes, nPlanes
+        );
+        forAll(planes, i)
         {
-            if (magSqr(N[i]) > 0)
+            for (label k = 0; k < nPlanes[i]; ++k)
             {
                 constrained[i] = true;
-                vector e(P[i] & N[i]);
+                vector e(P[i] & planes[i][k]);
                 if (mag(e) > 1e-6)
                 {
                     e /= mag(e);

@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dualMesh.H"
+#include "unitConversion.H"
+#include <Eigen/Eigenvalues>
 #include "Time.H"
 #include "polyMesh.H"
 #include "coupledPolyPatch.H"
@@ -453,6 +455,80 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
 Foam::scalar Foam::dualMesh::minLength() const
 {
     return gMin(length_);
+}
+
+
+void Foam::dualMesh::patchPointPlanes
+(
+    const label patchi,
+    const scalar featureAngle,
+    List<FixedList<vector, 3>>& planes,
+    labelList& nPlanes
+) const
+{
+    const vectorField meanN(patchPointNormals(patchi));
+    const patchSubFaces& sf = patchSubFaces_[patchi];
+
+    // Per point: the smallest cosine between a sub-face and the mean
+    // normal, and the sub-faces' area-weighted normal tensor (both summed
+    // over processors, so that every processor finds the same planes)
+    scalarField minCos(nPoints(), 1.0);
+    symmTensorField T(nPoints(), Zero);
+    forAll(sf.point, s)
+    {
+        const label i = sf.point[s];
+        const scalar a = mag(sf.area[s]);
+        if (a > VSMALL)
+        {
+            minCos[i] = min(minCos[i], (sf.area[s] & meanN[i])/a);
+            T[i] += sqr(sf.area[s])/a;
+        }
+    }
+    syncTools::syncPointList(mesh_, minCos, minEqOp<scalar>(), 1.0);
+    syncTools::syncPointList
+    (
+        mesh_, T, plusEqOp<symmTensor>(), symmTensor::zero
+    );
+
+    const scalar cosFeature = Foam::cos(degToRad(featureAngle));
+    FixedList<vector, 3> none;
+    none = Zero;
+    planes.setSize(nPoints());
+    planes = none;
+    nPlanes.setSize(nPoints());
+    nPlanes = 0;
+    forAll(T, i)
+    {
+        if (tr(T[i]) <= 0)
+        {
+            continue;
+        }
+        if (minCos[i] >= cosFeature && magSqr(meanN[i]) > 0.25)
+        {
+            planes[i][0] = meanN[i];
+            nPlanes[i] = 1;
+            continue;
+        }
+        // A feature point: the directions the sub-faces' normals span
+        // (eigenvalues of T at least a twentieth of the largest: two faces
+        // meeting at any angle from featureAngle on, with areas up to
+        // 20:1 apart)
+        const symmTensor& t = T[i];
+        Eigen::Matrix3d m;
+        m << t.xx(), t.xy(), t.xz(),
+             t.xy(), t.yy(), t.yz(),
+             t.xz(), t.yz(), t.zz();
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);
+        const scalar lMax = eig.eigenvalues()(2);
+        for (int k = 2; k >= 0; --k)
+        {
+            if (eig.eigenvalues()(k) >= 0.05*lMax)
+            {
+                const Eigen::Vector3d e(eig.eigenvectors().col(k));
+                planes[i][nPlanes[i]++] = vector(e(0), e(1), e(2));
+            }
+        }
+    }
 }
 
 

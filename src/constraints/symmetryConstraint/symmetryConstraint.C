@@ -20,6 +20,7 @@ Foam::symmetryConstraint::symmetryConstraint
     const label nPoints = dual.mesh().nPoints();
     List<tensor> P(nPoints, I);
     boolList constrained(nPoints, false);
+    List<DynamicList<tensor>> Q(nPoints);
     for (const solidBoundaryCondition& bc : bcs)
     {
         if (!bc.constrainsNormal())
@@ -48,6 +49,7 @@ Foam::symmetryConstraint::symmetryConstraint
                 {
                     e /= mag(e);
                     P[i] -= e*e;
+                    Q[i].append(I - 2*(e*e));
                 }
             }
         }
@@ -55,6 +57,11 @@ Foam::symmetryConstraint::symmetryConstraint
 
     points_ = findIndices(constrained, true);
     projections_ = UIndirectList<tensor>(P, points_)();
+    reflections_.setSize(points_.size());
+    forAll(points_, k)
+    {
+        reflections_[k] = Q[points_[k]];
+    }
 }
 
 

@@ -941,6 +941,14 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
 void Foam::solidBody::applyConstraints()
 {
     symmetry_->apply(lm_, u_);
+    // A point on a symmetry plane stands for its control volume completed
+    // by the mirror image, which does not rotate about the plane's axes
+    // (symmetryConstraint.H)
+    symmetry_->removePlaneRotation(F_);
+    if (scheme_->HLaw())
+    {
+        symmetry_->removePlaneRotation(H_);
+    }
     planeStrain_->apply(dual_.volumes(), lm_, u_);
 }
 

@@ -14,7 +14,6 @@ namespace Foam
     defineRunTimeSelectionTable(solidBoundaryCondition, dictionary);
 }
 
-const Foam::scalar Foam::solidBoundaryCondition::featureAngle = 30;
 
 
 Foam::solidBoundaryCondition::solidBoundaryCondition
@@ -42,7 +41,7 @@ Foam::solidBoundaryCondition::solidBoundaryCondition
     }
     syncTools::syncPointList(mesh, minCos, minEqOp<scalar>(), 1.0);
 
-    const scalar cosFeature = cos(degToRad(featureAngle));
+    const scalar cosFeature = cos(degToRad(dualMesh::featureAngle));
     auto normal = [&](const label i, const vector& N) -> vector
     {
         return (minCos[i] >= cosFeature) ? meanN[i] : N;

@@ -35,10 +35,7 @@ Foam::symmetryConstraint::symmetryConstraint
         // "Finite-strain bars on tets")
         List<FixedList<vector, 3>> planes;
         labelList nPlanes;
-        dual.patchPointPlanes
-        (
-            bc.patchi(), solidBoundaryCondition::featureAngle, planes, nPlanes
-        );
+        dual.patchPointPlanes(bc.patchi(), planes, nPlanes);
         forAll(planes, i)
         {
             for (label k = 0; k < nPlanes[i]; ++k)

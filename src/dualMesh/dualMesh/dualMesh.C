@@ -332,9 +332,10 @@ void Foam::dualMesh::calcPointEdges()
 void Foam::dualMesh::calcBoundaryNormals()
 {
     // Patch by patch (the same physical patches on every processor, before
-    // the processor patches), each point's patch normal with the part
-    // along the normals already taken removed; a normal within about 17
-    // degrees of those (a curved patch continuing another) adds nothing
+    // the processor patches), each of the point's planes of the patch
+    // (patchPointPlanes: both where one patch folds round an edge) with the
+    // part along the normals already taken removed; a normal within about
+    // 17 degrees of those (a curved patch continuing another) adds nothing
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     FixedList<vector, 3> none;
     none = Zero;
@@ -346,15 +347,18 @@ void Foam::dualMesh::calcBoundaryNormals()
         {
             continue;
         }
-        const vectorField N(patchPointNormals(patchi));
-        forAll(N, i)
+        List<FixedList<vector, 3>> planes;
+        labelList nPlanes;
+        patchPointPlanes(patchi, planes, nPlanes);
+        forAll(planes, i)
         {
-            if (magSqr(N[i]) > 0.25 && nNormals[i] < 3)
+            for (label p = 0; p < nPlanes[i] && nNormals[i] < 3; ++p)
             {
-                vector r(N[i]);
+                const vector& Np = planes[i][p];
+                vector r(Np);
                 for (label k = 0; k < nNormals[i]; ++k)
                 {
-                    r -= (normals[i][k] & N[i])*normals[i][k];
+                    r -= (normals[i][k] & Np)*normals[i][k];
                 }
                 const scalar magR = mag(r);
                 if (magR > 0.3)
@@ -381,6 +385,9 @@ void Foam::dualMesh::calcBoundaryNormals()
     boundaryPoints_.transfer(points);
     boundaryNormals_.transfer(pointNormals);
 }
+
+
+const Foam::scalar Foam::dualMesh::featureAngle = 30;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -461,7 +468,6 @@ Foam::scalar Foam::dualMesh::minLength() const
 void Foam::dualMesh::patchPointPlanes
 (
     const label patchi,
-    const scalar featureAngle,
     List<FixedList<vector, 3>>& planes,
     labelList& nPlanes
 ) const

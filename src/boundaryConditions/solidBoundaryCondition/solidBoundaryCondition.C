@@ -5,8 +5,6 @@
 
 #include "solidBoundaryCondition.H"
 #include "checkedInput.H"
-#include "syncTools.H"
-#include "unitConversion.H"
 
 namespace Foam
 {
@@ -31,20 +29,10 @@ Foam::solidBoundaryCondition::solidBoundaryCondition
     const polyMesh& mesh = dual_.mesh();
 
     const vectorField meanN(dual_.patchPointNormals(patchi_));
-
-    // Smallest cosine between a sub-face and its point's mean normal
-    scalarField minCos(mesh.nPoints(), 1.0);
-    forAll(sf.point, s)
-    {
-        const label i = sf.point[s];
-        minCos[i] = min(minCos[i], (sf.area[s] & meanN[i])/mag(sf.area[s]));
-    }
-    syncTools::syncPointList(mesh, minCos, minEqOp<scalar>(), 1.0);
-
-    const scalar cosFeature = cos(degToRad(dualMesh::featureAngle));
+    const boolList feature(dual_.patchFeaturePoints(patchi_, meanN));
     auto normal = [&](const label i, const vector& N) -> vector
     {
-        return (minCos[i] >= cosFeature) ? meanN[i] : N;
+        return feature[i] ? N : meanN[i];
     };
 
     // The distinct (point, normal) pairs, found through the pairs already

@@ -465,6 +465,37 @@ Foam::scalar Foam::dualMesh::minLength() const
 }
 
 
+Foam::boolList Foam::dualMesh::patchFeaturePoints
+(
+    const label patchi,
+    const vectorField& meanN
+) const
+{
+    // The smallest cosine between a sub-face and its point's mean normal,
+    // over processors
+    const patchSubFaces& sf = patchSubFaces_[patchi];
+    scalarField minCos(nPoints(), 1.0);
+    forAll(sf.point, s)
+    {
+        const label i = sf.point[s];
+        const scalar a = mag(sf.area[s]);
+        if (a > VSMALL)
+        {
+            minCos[i] = min(minCos[i], (sf.area[s] & meanN[i])/a);
+        }
+    }
+    syncTools::syncPointList(mesh_, minCos, minEqOp<scalar>(), 1.0);
+
+    const scalar cosFeature = Foam::cos(degToRad(featureAngle));
+    boolList feature(nPoints());
+    forAll(minCos, i)
+    {
+        feature[i] = (minCos[i] < cosFeature);
+    }
+    return feature;
+}
+
+
 void Foam::dualMesh::patchPointPlanes
 (
     const label patchi,
@@ -473,30 +504,25 @@ void Foam::dualMesh::patchPointPlanes
 ) const
 {
     const vectorField meanN(patchPointNormals(patchi));
+    const boolList feature(patchFeaturePoints(patchi, meanN));
     const patchSubFaces& sf = patchSubFaces_[patchi];
 
-    // Per point: the smallest cosine between a sub-face and the mean
-    // normal, and the sub-faces' area-weighted normal tensor (both summed
-    // over processors, so that every processor finds the same planes)
-    scalarField minCos(nPoints(), 1.0);
+    // Per point: the sub-faces' area-weighted normal tensor (summed over
+    // processors, so that every processor finds the same planes)
     symmTensorField T(nPoints(), Zero);
     forAll(sf.point, s)
     {
-        const label i = sf.point[s];
         const scalar a = mag(sf.area[s]);
         if (a > VSMALL)
         {
-            minCos[i] = min(minCos[i], (sf.area[s] & meanN[i])/a);
-            T[i] += sqr(sf.area[s])/a;
+            T[sf.point[s]] += sqr(sf.area[s])/a;
         }
     }
-    syncTools::syncPointList(mesh_, minCos, minEqOp<scalar>(), 1.0);
     syncTools::syncPointList
     (
         mesh_, T, plusEqOp<symmTensor>(), symmTensor::zero
     );
 
-    const scalar cosFeature = Foam::cos(degToRad(featureAngle));
     FixedList<vector, 3> none;
     none = Zero;
     planes.setSize(nPoints());
@@ -509,7 +535,7 @@ void Foam::dualMesh::patchPointPlanes
         {
             continue;
         }
-        if (minCos[i] >= cosFeature && magSqr(meanN[i]) > 0.25)
+        if (!feature[i] && magSqr(meanN[i]) > 0.25)
         {
             planes[i][0] = meanN[i];
             nPlanes[i] = 1;

@@ -75,7 +75,7 @@ int main(int argc, char *argv[])
     auto writeState = [&]()
     {
         timeDirectory::beginWrite(runTime);
-        for (const solidBody& b : bodies)
+        for (solidBody& b : bodies)
         {
             b.write();
             timeDirectory::interruptIfRequested(runTime);

@@ -106,9 +106,8 @@ Foam::autoPtr<Foam::solidBoundaryCondition> Foam::solidBoundaryCondition::New
 
 Foam::scalar Foam::solidBoundaryCondition::addFluxes
 (
-    const UList<point>& x,
-    const UList<vector>& v,
-    const UList<tensor>& P,
+    const UList<vector>& u,
+    const UList<fluxState>& q,
     const UList<tensor>& H,
     const waveData& body,
     const scalar t,
@@ -119,6 +118,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
 ) const
 {
     const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
+    const pointField& X = dual_.mesh().points();
     const bool keepStates = tB.size();
     scalar power = 0;
 
@@ -133,7 +133,8 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         const waveData w{body.Zp, body.Zs, body.shockMass*Lambda};
         contactState
         (
-            n, N, x[i], v[i], P[i] & N, w, t, stateT_[k], stateV_[k]
+            n, N, X[i] + u[i], fluxVelocity(q[i]), fluxStress(q[i]) & N,
+            w, t, stateT_[k], stateV_[k]
         );
         stateP_[k] = stateT_[k] & stateV_[k];
     }

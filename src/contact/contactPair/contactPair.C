@@ -249,10 +249,11 @@ void Foam::contactPair::setSide
     }
     side.N /= mag(side.N);
 
+    const scalarField lengths(body.dual().lengths());
     side.length.setSize(side.points.size());
     forAll(side.points, i)
     {
-        side.length[i] = body.dual().lengths()[side.points[i]];
+        side.length[i] = lengths[side.points[i]];
     }
     side.project.setSize(side.points.size(), I);
     const List<tensor>& proj = body.symmetry().projections();
@@ -542,12 +543,11 @@ bool Foam::contactPair::needsMapping() const
         const pointField& mapped
     )
     {
-        const List<point>& x = side.body->x();
         List<vector> d(side.points.size());
         forAll(side.points, i)
         {
             d[i] =
-                x[side.points[i]]
+                side.body->x(side.points[i])
               - mapped[surface.copyUnique[side.offset + i]];
         }
         return exchanged(side, std::move(d));
@@ -995,9 +995,7 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
 ) const
 {
     const solidBody& body = *side.body;
-    const List<point>& x = body.x();
-    const List<vector>& v = body.v();
-    const List<tensor>& P = body.P();
+    const List<fluxState>& q = body.q();
     const List<tensor>& H = body.Hc();
 
     List<pointData> local(side.points.size());
@@ -1015,7 +1013,7 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
         // velocity as well breaks the pairing of the momentum and F
         // fluxes (the rings' energy then rose by 0.27 % of E0)
         const tensor& Pr = side.project[i];
-        const vector t(P[p] & N);
+        const vector t(fluxStress(q[p]) & N);
         const vector hN(H[p] & N);
         const scalar Lambda = mag(hN);
         // A control volume folded over at a corner can turn H N against
@@ -1029,7 +1027,8 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
         }
         local[i] = pointData
         {
-            x[p], v[p], t, n, Lambda, side.length[i], body.SigmaJ()[p]
+            body.x(p), fluxVelocity(q[p]), t, n, Lambda, side.length[i],
+            fluxSigmaJ(q[p])
         };
     }
     return local;
@@ -1737,10 +1736,10 @@ void Foam::contactPair::addNonMatchingFluxes()
     addSideFluxes(B_, false);
 
     List<vector>& RpB = B_.body->residual().momentum;
-    const scalarField& wB = B_.body->dual().pointWeights();
+    const dualMesh& dualB = B_.body->dual();
     forAll(B_.points, i)
     {
-        RpB[B_.points[i]] += wB[B_.points[i]]*FB[i];
+        RpB[B_.points[i]] += dualB.pointWeight(B_.points[i])*FB[i];
     }
 }
 
@@ -1839,7 +1838,7 @@ void Foam::contactPair::addFluxes()
 
     const List<vector> forceA(exchanged(A_, tractionForcesA()));
     List<vector>& RpB = B_.body->residual().momentum;
-    const scalarField& wB = B_.body->dual().pointWeights();
+    const dualMesh& dualB = B_.body->dual();
     forAll(B_.points, i)
     {
         vector F(Zero);
@@ -1849,7 +1848,7 @@ void Foam::contactPair::addFluxes()
         {
             F -= share[m]*forceA[from[m]];
         }
-        RpB[B_.points[i]] += wB[B_.points[i]]*F;
+        RpB[B_.points[i]] += dualB.pointWeight(B_.points[i])*F;
     }
 }
 

@@ -253,7 +253,6 @@ void Foam::dualMesh::calcBoundarySubFaces()
 
 void Foam::dualMesh::synchronise(vectorField& edgeC)
 {
-    pointWeight_ = 1.0;
     scalarField edgeWeight(edgeC.size(), 1.0);
 
     if (Pstream::parRun())
@@ -261,11 +260,15 @@ void Foam::dualMesh::synchronise(vectorField& edgeC)
         const pointField& X = mesh_.points();
 
         syncTools::syncPointList(mesh_, volume_, plusEqOp<scalar>(), 0.0);
-        syncTools::syncPointList(mesh_, length_, minEqOp<scalar>(), GREAT);
+        scalarField nHolders(volume_.size(), 1.0);
         syncTools::syncPointList
         (
-            mesh_, pointWeight_, plusEqOp<scalar>(), 0.0
+            mesh_, nHolders, plusEqOp<scalar>(), 0.0
         );
+        forAll(nHolders, i)
+        {
+            multiplicity_[i] = uint8_t(nHolders[i] + 0.5);
+        }
 
         // Shared edges may be oriented differently on each processor:
         // sum them in a common (lexicographic) orientation
@@ -288,8 +291,6 @@ void Foam::dualMesh::synchronise(vectorField& edgeC)
             }
         }
         edgeWeight = edgeWeights();
-
-        pointWeight_ = 1.0/pointWeight_;
     }
 
     edgeNormal_.setSize(edgeC.size());
@@ -400,8 +401,7 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     edgeNormal_(),
     edgeMagSf_(),
     volume_(mesh.nPoints(), 0.0),
-    length_(mesh.nPoints(), GREAT),
-    pointWeight_(mesh.nPoints(), 1.0),
+    multiplicity_(mesh.nPoints(), uint8_t(1)),
     patchSubFaces_(),
     pointEdgeStart_(),
     pointEdges_(),
@@ -416,10 +416,6 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     {
         edgeStart_[e] = edges[e].start();
         edgeEnd_[e] = edges[e].end();
-
-        const scalar l = mag(X[edgeEnd_[e]] - X[edgeStart_[e]]);
-        length_[edgeStart_[e]] = min(length_[edgeStart_[e]], l);
-        length_[edgeEnd_[e]] = min(length_[edgeEnd_[e]], l);
     }
 
     {
@@ -459,9 +455,29 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::tmp<Foam::scalarField> Foam::dualMesh::lengths() const
+{
+    const pointField& X = mesh_.points();
+    tmp<scalarField> tl(new scalarField(nPoints(), GREAT));
+    scalarField& l = tl.ref();
+    forAll(edgeStart_, e)
+    {
+        const label i = edgeStart_[e], j = edgeEnd_[e];
+        const scalar le = mag(X[j] - X[i]);
+        l[i] = min(l[i], le);
+        l[j] = min(l[j], le);
+    }
+    if (Pstream::parRun())
+    {
+        syncTools::syncPointList(mesh_, l, minEqOp<scalar>(), GREAT);
+    }
+    return tl;
+}
+
+
 Foam::scalar Foam::dualMesh::minLength() const
 {
-    return gMin(length_);
+    return gMin(lengths());
 }
 
 
@@ -601,7 +617,7 @@ Foam::scalar Foam::dualMesh::sumPoints(const UList<scalar>& f) const
     scalar s = 0;
     forAll(f, i)
     {
-        s += pointWeight_[i]*f[i];
+        s += pointWeight(i)*f[i];
     }
     reduce(s, sumOp<scalar>());
     return s;

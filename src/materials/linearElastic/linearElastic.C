@@ -28,8 +28,7 @@ void Foam::materialModels::linearElastic::stress
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    UList<tensor>& P,
-    UList<scalar>& SigmaJ
+    UList<fluxState>& q
 ) const
 {
     forAll(F, i)
@@ -37,8 +36,12 @@ void Foam::materialModels::linearElastic::stress
         const tensor& f = F[i];
         const scalar trF = tr(f);
         const scalar sJ = volumetricSigmaJ(trF - 2);
-        P[i] = mu_*(f + f.T() - (2.0/3.0)*trF*I) + sJ*I;
-        SigmaJ[i] = sJ;
+        setFluxStress
+        (
+            q[i],
+            mu_*(f + f.T() - (2.0/3.0)*trF*I) + sJ*I,
+            sJ
+        );
     }
 }
 

@@ -39,8 +39,7 @@ void Foam::materialModels::mooneyRivlin::stress
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    UList<tensor>& P,
-    UList<scalar>& SigmaJ
+    UList<fluxState>& q
 ) const
 {
     forAll(F, i)
@@ -57,10 +56,13 @@ void Foam::materialModels::mooneyRivlin::stress
           - 2*xi_*HH*sqrt(HH)/(d2*detF);
         const scalar sJ = volumetricSigmaJ(J[i]);
         const tensor SigmaH((3*xi_*sqrt(HH)/d2)*H[i]);
-        P[i] =
+        setFluxStress
+        (
+            q[i],
             2*zeta_*j23*F[i] + tensorCross(SigmaH, F[i])
-          + (sDet + sJ + couplingPressure(detF, J[i]))*H[i];
-        SigmaJ[i] = sJ + couplingSigmaJ(detF, J[i]);
+          + (sDet + sJ + couplingPressure(detF, J[i]))*H[i],
+            sJ + couplingSigmaJ(detF, J[i])
+        );
     }
 }
 

@@ -28,8 +28,7 @@ void Foam::materialModels::neoHookean::stress
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    UList<tensor>& P,
-    UList<scalar>& SigmaJ
+    UList<fluxState>& q
 ) const
 {
     forAll(F, i)
@@ -40,10 +39,16 @@ void Foam::materialModels::neoHookean::stress
         const scalar j23 = pow(detF, -2.0/3.0);
         const scalar FF = F[i] && F[i];
         const scalar sJ = volumetricSigmaJ(J[i]);
-        P[i] =
+        setFluxStress
+        (
+            q[i],
             mu_*j23*F[i]
-          + (sJ + couplingPressure(detF, J[i]) - (mu_/3.0)*j23*FF/detF)*H[i];
-        SigmaJ[i] = sJ + couplingSigmaJ(detF, J[i]);
+          + (
+                sJ + couplingPressure(detF, J[i])
+              - (mu_/3.0)*j23*FF/detF
+            )*H[i],
+            sJ + couplingSigmaJ(detF, J[i])
+        );
     }
 }
 

@@ -111,8 +111,7 @@ void Foam::materialModels::vonMisesPlasticity::stress
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    UList<tensor>& P,
-    UList<scalar>& SigmaJ
+    UList<fluxState>& q
 ) const
 {
     vector lnLam, tauDev;
@@ -139,10 +138,13 @@ void Foam::materialModels::vonMisesPlasticity::stress
             tauDevTensor += tauDev[a]*(n*n);
         }
         const scalar detF = det(F[i]);
-        P[i] =
+        setFluxStress
+        (
+            q[i],
             (tauDevTensor & inv(F[i]).T())
-          + (Jp/J[i] + couplingPressure(detF, J[i]))*H[i];
-        SigmaJ[i] = Jp/J[i] + couplingSigmaJ(detF, J[i]);
+          + (Jp/J[i] + couplingPressure(detF, J[i]))*H[i],
+            Jp/J[i] + couplingSigmaJ(detF, J[i])
+        );
 
         // The returned state, for updateState() and energy()
         const scalar lnJ3 = log(J[i])/3.0;

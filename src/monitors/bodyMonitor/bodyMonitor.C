@@ -174,7 +174,7 @@ Foam::scalar Foam::bodyMonitor::write(const scalar t)
         const label i = probePoints_[k];
         if (i >= 0)
         {
-            const vector& v = body_.v()[i];
+            const vector v(fluxVelocity(body_.q()[i]));
             const vector& u = body_.u()[i];
             const symmTensor s(body_.cauchyStress(i));
             const scalar row[12] =

@@ -116,15 +116,16 @@ void Foam::limiters::barthJespersen::limit
         const point& Xi = X[i];
         const fluxState& qi = q[i];
         const label s = parallel ? sharedIndex_[i] : -1;
-        fluxState dHi, dLo, lo(qi), hi(qi);
-        dHi = 0.0;
-        dLo = 0.0;
+        fluxIncrement dHi, dLo;
+        fluxState lo(qi), hi(qi);
+        dHi = gradientScalar(0);
+        dLo = gradientScalar(0);
         for (label k = pointEdgeStart[i]; k < pointEdgeStart[i + 1]; ++k)
         {
             const label e = pointEdges[k];
             const label j = es[e] + ee[e] - i;
             const vector halfdX(0.5*(X[j] - Xi));
-            fluxState d;
+            fluxIncrement d;
             gradientIncrements(g, halfdX, d);
             #pragma GCC unroll 1
             for (direction c = 0; c < nFluxComponents; ++c)

@@ -180,27 +180,32 @@ void Foam::greenGaussGradient
             prefetchObject<1>(G[jAhead]);
         }
         const vector C(0.5*Ae[e]*Ne[e]);
-        const scalar Cx = C.x(), Cy = C.y(), Cz = C.z();
+        const gradientScalar Cx = C.x(), Cy = C.y(), Cz = C.z();
         const scalar* __restrict__ qi = q[i].cdata();
         const scalar* __restrict__ qj = q[j].cdata();
         // (i != j: the two gradients never alias)
-        scalar* __restrict__ Gi = G[i].data();
-        scalar* __restrict__ Gj = G[j].data();
+        gradientScalar* __restrict__ Gi = G[i].data();
+        gradientScalar* __restrict__ Gj = G[j].data();
+        // Both ends gain (q_j - q_i) C/2: the difference form of
+        // (q_i + q_j) C/2, equal to it because each dual cell is closed
+        // (its edge and boundary areas sum to zero).  Its terms are of the
+        // size of the gradient times the cell, not of the values'
         const direction n = nFluxComponents;
         for (direction c = 0; c < n; ++c)
         {
-            const scalar f = qi[c] + qj[c];
-            const scalar fx = f*Cx, fy = f*Cy, fz = f*Cz;
+            const gradientScalar f = qj[c] - qi[c];
+            const gradientScalar fx = f*Cx, fy = f*Cy, fz = f*Cz;
             Gi[c] += fx;
             Gi[n + c] += fy;
             Gi[2*n + c] += fz;
-            Gj[c] -= fx;
-            Gj[n + c] -= fy;
-            Gj[2*n + c] -= fz;
+            Gj[c] += fx;
+            Gj[n + c] += fy;
+            Gj[2*n + c] += fz;
         }
     }
 
-    // Physical patches (coupled patches have no sub-faces)
+    // Physical patches (coupled patches have no sub-faces), in the same
+    // difference form: (f_g - f_i) C_g
     forAll(patches, patchi)
     {
         const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
@@ -215,8 +220,7 @@ void Foam::greenGaussGradient
             {
                 addGradient
                 (
-                    G[i], c,
-                    (qi[c] + w*(qp[c] + qn[c] - 2*qi[c]))*sf.area[s]
+                    G[i], c, (w*(qp[c] + qn[c] - 2*qi[c]))*sf.area[s]
                 );
             }
         }
@@ -242,7 +246,7 @@ void Foam::greenGaussGradient
     forAll(G, i)
     {
         const scalar invV = 1.0/V[i];
-        for (scalar& g : G[i])
+        for (gradientScalar& g : G[i])
         {
             g *= invV;
         }

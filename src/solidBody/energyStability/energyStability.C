@@ -11,8 +11,9 @@
 
 Foam::energyStability::energyStability(const dualMesh& dual, const bool JLaw)
 :
-    edgeAreaSum_(dual.mesh().nPoints(), Zero),
-    edgeAreaMag_(dual.mesh().nPoints(), Zero),
+    openPoints_(),
+    openAreaSum_(),
+    edgeAreaMag_(dual.mesh().nPoints(), 0.0f),
     JLaw_(JLaw),
     boundaryPoints_(),
     asideMomentum_(),
@@ -22,13 +23,30 @@ Foam::energyStability::energyStability(const dualMesh& dual, const bool JLaw)
     const labelList& ee = dual.edgeEnd();
     const vectorField& Ne = dual.edgeNormals();
     const scalarField& Ae = dual.edgeMagSf();
+    List<vector> edgeAreaSum(dual.mesh().nPoints(), Zero);
     forAll(es, e)
     {
-        edgeAreaSum_[es[e]] += Ae[e]*Ne[e];
-        edgeAreaSum_[ee[e]] -= Ae[e]*Ne[e];
+        edgeAreaSum[es[e]] += Ae[e]*Ne[e];
+        edgeAreaSum[ee[e]] -= Ae[e]*Ne[e];
         edgeAreaMag_[es[e]] += Ae[e];
         edgeAreaMag_[ee[e]] += Ae[e];
     }
+
+    // A closed cell's edge areas sum to zero: only the points whose cell
+    // the physical or a processor boundary closes keep theirs (elsewhere
+    // the sum is rounding, far below the production's rounding scale)
+    DynamicList<label> open;
+    DynamicList<vector> openSum;
+    forAll(edgeAreaSum, i)
+    {
+        if (mag(edgeAreaSum[i]) > 1e-10*edgeAreaMag_[i])
+        {
+            open.append(i);
+            openSum.append(edgeAreaSum[i]);
+        }
+    }
+    openPoints_.transfer(open);
+    openAreaSum_.transfer(openSum);
 
     // Boundary conditions and contact pairs add to the points of the
     // sub-faces of the physical patches only
@@ -65,33 +83,38 @@ void Foam::energyStability::setAside(const stageResidual& R)
 Foam::vector2D Foam::energyStability::production
 (
     const stageResidual& R,
-    const UList<vector>& v,
-    const UList<tensor>& P,
-    const UList<scalar>& SigmaJ
+    const UList<fluxState>& q
 ) const
 {
     vector2D prod(Zero);
     forAll(R.momentum, i)
     {
-        prod.x() +=
-            (v[i] & R.momentum[i]) + (P[i] && R.F[i])
-          - (v[i] & (P[i] & edgeAreaSum_[i]));
-        prod.y() += mag(v[i])*mag(P[i])*edgeAreaMag_[i];
+        const vector v(fluxVelocity(q[i]));
+        const tensor P(fluxStress(q[i]));
+        prod.x() += (v & R.momentum[i]) + (P && R.F[i]);
+        prod.y() += mag(v)*mag(P)*edgeAreaMag_[i];
+    }
+    forAll(openPoints_, k)
+    {
+        const label i = openPoints_[k];
+        prod.x() -= fluxVelocity(q[i]) & (fluxStress(q[i]) & openAreaSum_[k]);
     }
     forAll(boundaryPoints_, b)
     {
         const label i = boundaryPoints_[b];
-        prod.x() -= (v[i] & asideMomentum_[b]) + (P[i] && asideF_[b]);
+        const vector v(fluxVelocity(q[i]));
+        const tensor P(fluxStress(q[i]));
+        prod.x() -= (v & asideMomentum_[b]) + (P && asideF_[b]);
         // (what is taken out counts in the rounding: at rest against a
         // wall, unstressed, only the wall's fluxes are not zero)
         prod.y() +=
-            mag(v[i])*mag(asideMomentum_[b]) + mag(P[i])*mag(asideF_[b]);
+            mag(v)*mag(asideMomentum_[b]) + mag(P)*mag(asideF_[b]);
     }
     if (JLaw_)
     {
         forAll(R.J, i)
         {
-            prod.x() += SigmaJ[i]*R.J[i];
+            prod.x() += fluxSigmaJ(q[i])*R.J[i];
         }
     }
     return prod;

@@ -340,15 +340,11 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     }
 
     const label nPts = mesh_.nPoints();
-    v_.setSize(nPts);
-    x_.setSize(nPts);
-    P_.setSize(nPts);
-    SigmaJ_.setSize(nPts);
+    q_.setSize(nPts);
     residual_.setSize(nPts, scheme_->JLaw());
     residual_.setBoundarySize(dual_, scheme_->riemannBoundarySlope());
     if (scheme_->secondOrder())
     {
-        q_.setSize(nPts);
         G_.setSize(nPts);
     }
     if (!updateConstitutive())
@@ -421,13 +417,11 @@ void Foam::solidBody::restoreState()
 
 bool Foam::solidBody::updateConstitutive()
 {
-    const pointField& X = mesh_.points();
     const scalar invRho = 1.0/material_->rho();
 
     forAll(lm_, i)
     {
-        v_[i] = invRho*lm_[i];
-        x_[i] = X[i] + u_[i];
+        setFluxVelocity(q_[i], invRho*lm_[i]);
     }
     if (!scheme_->HLaw())
     {
@@ -484,7 +478,7 @@ bool Foam::solidBody::updateConstitutive()
     }
     if (returnReduce(bad < 0, andOp<bool>()))
     {
-        material_->stress(F_, H, J, P_, SigmaJ_);
+        material_->stress(F_, H, J, q_);
         return true;
     }
 
@@ -613,10 +607,6 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
 
     if (scheme_->secondOrder())
     {
-        forAll(q_, i)
-        {
-            packFluxState(v_[i], P_[i], SigmaJ_[i], q_[i]);
-        }
         greenGaussGradient
         (
             dual_, q_, G_,
@@ -672,14 +662,16 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             // particle velocity jump and the limiter leaves its jump in
             // place; smooth waves and bending within elastic limits close
             // far slower, with reconstructed jumps of either sign)
-            const scalar closing = (v_[i] - v_[j]) & n;
+            const scalar closing =
+                (fluxVelocity(q_[i]) - fluxVelocity(q_[j])) & n;
             w =
                 closing > 0 && ((vL - vR) & n) > 0
               ? min(1.0, closing/shockSensorSpeed) : 0;
         }
         if (w > 0)
         {
-            const scalar jump1 = mag((P_[j] - P_[i]) & N);
+            const scalar jump1 =
+                mag((fluxStress(q_[j]) - fluxStress(q_[i])) & N);
             w *= jump1 > VSMALL ? min(1.0, 2*mag(dt)/jump1) : 1.0;
             dt *= w;
         }
@@ -751,9 +743,14 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     ) __attribute__((always_inline))
     {
         const label i = es[e], j = ee[e];
+        const fluxState& qi = q_[i];
+        const fluxState& qj = q_[j];
         edgeFlux
         (
-            e, v_[i], v_[j], P_[i], P_[j], SigmaJ_[i], SigmaJ_[j],
+            e,
+            fluxVelocity(qi), fluxVelocity(qj),
+            fluxStress(qi), fluxStress(qj),
+            fluxSigmaJ(qi), fluxSigmaJ(qj),
             tC, vCA, dS
         );
     };
@@ -767,10 +764,13 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     ) __attribute__((always_inline))
     {
         const label i = es[e], j = ee[e];
+        const fluxState& qi = q_[i];
+        const fluxState& qj = q_[j];
         return energyStability::edgeProduction
         (
             tC, vCA, dS,
-            v_[i], P_[i], SigmaJ_[i], v_[j], P_[j], SigmaJ_[j],
+            fluxVelocity(qi), fluxStress(qi), fluxSigmaJ(qi),
+            fluxVelocity(qj), fluxStress(qj), fluxSigmaJ(qj),
             Ne[e], Ae[e]
         );
     };
@@ -820,7 +820,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     {
         const scalar theta = energyStability_->apply
         (
-            residual_, v_, P_, SigmaJ_,
+            residual_, q_,
             [&]()
             {
                 scalar S0 = 0;
@@ -862,7 +862,7 @@ void Foam::solidBody::addBoundaryFluxes(const scalar t)
         const label patchi = bc.patchi();
         residual_.power += bc.addFluxes
         (
-            x_, v_, P_, H, body, t, residual_.momentum, residual_.F,
+            u_, q_, H, body, t, residual_.momentum, residual_.F,
             residual_.boundaryTraction[patchi],
             residual_.boundaryVelocity[patchi]
         );
@@ -880,11 +880,12 @@ void Foam::solidBody::finishResiduals()
     if (magSqr(bodyForce_) > 0)
     {
         const scalarField& V = dual_.volumes();
-        const scalarField& w = dual_.pointWeights();
         const scalar rho = material_->rho();
-        forAll(v_, i)
+        forAll(q_, i)
         {
-            residual_.power += w[i]*V[i]*rho*(bodyForce_ & v_[i]);
+            residual_.power +=
+                dual_.pointWeight(i)*V[i]*rho
+               *(bodyForce_ & fluxVelocity(q_[i]));
         }
     }
     reduce(residual_.power, sumOp<scalar>());
@@ -925,7 +926,7 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
         }
 
         lm_[i] = a*lm0_[i] + b*(lm_[i] + dt*(invV*residual_.momentum[i] + rhoB));
-        u_[i] = a*u0_[i] + b*(u_[i] + dt*v_[i]);
+        u_[i] = a*u0_[i] + b*(u_[i] + dt*fluxVelocity(q_[i]));
         F_[i] = a*F0_[i] + b*(F_[i] + dt*Drate);
     }
 
@@ -974,9 +975,9 @@ Foam::scalar Foam::solidBody::stableDeltaT() const
     scalar vMax = 0;
     if (material_->hugoniot())
     {
-        forAll(v_, i)
+        forAll(q_, i)
         {
-            vMax = max(vMax, magSqr(v_[i]));
+            vMax = max(vMax, magSqr(fluxVelocity(q_[i])));
         }
         vMax = Foam::sqrt(returnReduce(vMax, maxOp<scalar>()));
     }
@@ -1020,7 +1021,7 @@ Foam::vector Foam::solidBody::linearMomentum() const
     vector sum(Zero);
     forAll(lm_, i)
     {
-        sum += dual_.pointWeights()[i]*V[i]*lm_[i];
+        sum += dual_.pointWeight(i)*V[i]*lm_[i];
     }
     reduce(sum, sumOp<vector>());
     return sum;
@@ -1052,7 +1053,7 @@ Foam::symmTensor Foam::solidBody::cauchyStress(const label i) const
 {
     // Push-forward with det F (= H:F/3), consistent with the F it uses;
     // with the J law J may differ slightly from det F
-    return symm(P_[i] & F_[i].T())/((Hc()[i] && F_[i])/3.0);
+    return symm(fluxStress(q_[i]) & F_[i].T())/((Hc()[i] && F_[i])/3.0);
 }
 
 
@@ -1070,6 +1071,12 @@ void Foam::solidBody::releaseInternalFaces()
     {
         faces[f].clear();
     }
+
+    // Nor does it read zones (gmsh's physical groups become zones: a label
+    // per cell of every body)
+    const_cast<pointZoneMesh&>(mesh_.pointZones()).clear();
+    const_cast<faceZoneMesh&>(mesh_.faceZones()).clear();
+    const_cast<cellZoneMesh&>(mesh_.cellZones()).clear();
 }
 
 
@@ -1093,25 +1100,36 @@ void Foam::solidBody::checkReleasedFaces() const
 }
 
 
-void Foam::solidBody::write() const
+void Foam::solidBody::write()
 {
     checkReleasedFaces();
-    writePointField(mesh_, "lm", lm_, dimDensity*dimVelocity);
-    writePointField(mesh_, "u", u_, dimLength);
-    writePointField(mesh_, "F", F_, dimless);
-    if (scheme_->HLaw()) writePointField(mesh_, "H", H_, dimless);
-    if (scheme_->JLaw()) writePointField(mesh_, "J", J_, dimless);
-    writePointField(mesh_, "v", v_, dimVelocity);
 
-    List<symmTensor> sigma(P_.size());
-    scalarList p(P_.size());
-    forAll(sigma, i)
-    {
-        sigma[i] = cauchyStress(i);
-        p[i] = -tr(sigma[i])/3.0;
-    }
-    writePointField(mesh_, "sigma", sigma, dimPressure);
-    writePointField(mesh_, "p", p, dimPressure);
+    // The state's lists are lent to the fields for the write (no copies:
+    // the write would otherwise set the run's peak memory), v, sigma and p
+    // computed into theirs, in the room of the residuals (which are not in
+    // use between steps)
+    writePointFieldLending(mesh_, "lm", lm_, dimDensity*dimVelocity);
+    writePointFieldLending(mesh_, "u", u_, dimLength);
+    writePointFieldLending(mesh_, "F", F_, dimless);
+    if (scheme_->HLaw()) writePointFieldLending(mesh_, "H", H_, dimless);
+    if (scheme_->JLaw()) writePointFieldLending(mesh_, "J", J_, dimless);
+    const label nPts = residual_.releasePointLists();
+    writePointFieldOf<vector>
+    (
+        mesh_, "v", dimVelocity,
+        [this](const label i) { return fluxVelocity(q_[i]); }
+    );
+    writePointFieldOf<symmTensor>
+    (
+        mesh_, "sigma", dimPressure,
+        [this](const label i) { return cauchyStress(i); }
+    );
+    writePointFieldOf<scalar>
+    (
+        mesh_, "p", dimPressure,
+        [this](const label i) { return -tr(cauchyStress(i))/3.0; }
+    );
+    residual_.setSize(nPts, scheme_->JLaw());
     material_->writeState(mesh_);
 
     // Energy bookkeeping for restarts

@@ -209,7 +209,11 @@ Foam::scalar Foam::solverTime::stepToTargets(const scalar dt) const
         toTarget = min
         (
             toTarget,
-            (writeTimeIndex_ + 1)*writeInterval_ - (value() - startTime_)
+            writesBeforeStart_ >= 0
+          ? firstStart_
+          + (writesBeforeStart_ + writeTimeIndex_ + 1)*writeInterval_
+          - value()
+          : (writeTimeIndex_ + 1)*writeInterval_ - (value() - startTime_)
         );
     }
     if (!(toTarget > 0) || !(dt > 0))
@@ -228,9 +232,19 @@ Foam::solverTime::solverTime(const argList& args)
 :
     Time(checkControlDict(args), args),
     restart_(false),
-    cfl_(controlDict().getOrDefault<scalar>("cfl", 0.9))
+    cfl_(controlDict().getOrDefault<scalar>("cfl", 0.9)),
+    firstStart_(controlDict().getOrDefault<scalar>("startTime", 0)),
+    writesBeforeStart_(-1)
 {
     selectStartTime();
+    if (writeControl_ == wcAdjustableRunTime)
+    {
+        const scalar n = (startTime_ - firstStart_)/writeInterval_;
+        if (n > -0.5 && mag(n - std::round(n)) < 1e-6)
+        {
+            writesBeforeStart_ = label(std::round(n));
+        }
+    }
 
     if (restart_)
     {

@@ -158,7 +158,11 @@ Foam::stableTimeStep::stableTimeStep
         M_.setSize(nPts);
         forAll(M_, i)
         {
-            M_[i] = Tall[i]/max(S[i], VSMALL);
+            const symmTensor m(Tall[i]/max(S[i], VSMALL));
+            M_[i] = SymmTensor<floatScalar>
+            (
+                m.xx(), m.xy(), m.xz(), m.yy(), m.yz(), m.zz()
+            );
         }
     }
 }
@@ -232,7 +236,11 @@ Foam::scalar Foam::stableTimeStep::deltaT
         if (!M_.empty())
         {
             const tensor& h = H[i];
-            const symmTensor& m = M_[i];
+            const SymmTensor<floatScalar>& mf = M_[i];
+            const symmTensor m
+            (
+                mf.xx(), mf.xy(), mf.xz(), mf.yy(), mf.yz(), mf.zz()
+            );
             const scalar detF2 = sqr((h && F[i])/3);
             scalar s2 = 0;
             for (direction k = 0; k < 3; ++k)

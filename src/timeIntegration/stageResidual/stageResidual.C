@@ -16,6 +16,16 @@ void Foam::stageResidual::setSize(const label nPoints, const bool JLaw)
 }
 
 
+Foam::label Foam::stageResidual::releasePointLists()
+{
+    const label nPoints = momentum.size();
+    momentum.clear();
+    F.clear();
+    J.clear();
+    return nPoints;
+}
+
+
 void Foam::stageResidual::setBoundarySize
 (
     const dualMesh& dual,

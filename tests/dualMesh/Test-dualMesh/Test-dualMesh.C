@@ -287,7 +287,7 @@ int main(int argc, char *argv[])
         forAll(vol, i)
         {
             os  << "p " << global[i] << ' ' << vol[i] << ' '
-                << dual.pointWeights()[i] << nl;
+                << dual.pointWeight(i) << nl;
         }
         forAll(es, e)
         {

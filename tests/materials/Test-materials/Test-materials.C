@@ -52,11 +52,12 @@ void stressFJ
     tensor& P, scalar& SigmaJ
 )
 {
-    List<tensor> Fl(1, F), Hl(1, cofactor(F)), Pl(1);
-    List<scalar> Jl(1, J), SJ(1);
-    m.stress(Fl, Hl, Jl, Pl, SJ);
-    P = Pl[0];
-    SigmaJ = SJ[0];
+    List<tensor> Fl(1, F), Hl(1, cofactor(F));
+    List<scalar> Jl(1, J);
+    List<fluxState> q(1);
+    m.stress(Fl, Hl, Jl, q);
+    P = fluxStress(q[0]);
+    SigmaJ = fluxSigmaJ(q[0]);
 }
 
 
@@ -71,10 +72,11 @@ scalar totalEnergy(const materialModel& m, const tensor& F)
 
 tensor stressOf(const materialModel& m, const tensor& F)
 {
-    List<tensor> Fl(1, F), Hl(1, cofactor(F)), P(1);
-    List<scalar> Jl(1, det(F)), SJ(1);
-    m.stress(Fl, Hl, Jl, P, SJ);
-    return P[0];
+    List<tensor> Fl(1, F), Hl(1, cofactor(F));
+    List<scalar> Jl(1, det(F));
+    List<fluxState> q(1);
+    m.stress(Fl, Hl, Jl, q);
+    return fluxStress(q[0]);
 }
 
 

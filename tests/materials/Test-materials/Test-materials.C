@@ -164,12 +164,10 @@ int main(int argc, char *argv[])
                 const scalar scale = max(mag(P), m.kappa()*1e-3);
                 err = max(err, mag(P - dW)/scale);
             }
-            // The Hugoniot energy is the jump-condition energy, not the
-            // potential of p_H: only the elastic branch is a derivative
-            if (!m.hugoniot())
-            {
-                check(err < 1e-6, "P = dW/dF (central differences)", err, 1e-6);
-            }
+            // (the Hugoniot branch too: its energy is the potential of
+            // p_H, not the jump-condition energy, so that the numerical
+            // dissipation is measured against the equations' energy)
+            check(err < 1e-6, "P = dW/dF (central differences)", err, 1e-6);
         }
 
         // Independent J (J law): P = dW/dF|J + Sigma_J cof F with Sigma_J
@@ -177,14 +175,18 @@ int main(int argc, char *argv[])
         // both, the semi-discrete energy balance is exact and the scheme
         // only dissipates (doc/method.md, section 7; the tie energy in
         // materialModel.H is built for this)
-        if (finiteStrain && !m.hugoniot())
+        if (finiteStrain)
         {
             scalar err = 0;
             for (label k = 0; k < 20; ++k)
             {
                 tensor F(I);
                 for (direction c = 0; c < 9; ++c) F[c] += 0.4*(rnd.sample01<scalar>() - 0.5);
-                const scalar J = det(F)*(0.8 + 0.4*rnd.sample01<scalar>());
+                scalar J = det(F)*(0.8 + 0.4*rnd.sample01<scalar>());
+                if (m.hugoniot() && k % 2 == 0)
+                {
+                    J = min(J, 0.85);   // compression: the Hugoniot branch
+                }
                 tensor P;
                 scalar SJ;
                 stressFJ(m, F, J, P, SJ);

@@ -1478,6 +1478,32 @@ Foam::contactPair::contactPair
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::contactPair::impactMach(const solidBody& b) const
+{
+    if (A_.body != &b && B_.body != &b)
+    {
+        return 0;
+    }
+    // (a planar impact: both contact patches flat)
+    if
+    (
+        !A_.body->dual().patchFlat(A_.patchi, solidBody::planarImpactAngle)
+     || !B_.body->dual().patchFlat(B_.patchi, solidBody::planarImpactAngle)
+    )
+    {
+        return 0;
+    }
+    const solidBody& other = (A_.body == &b) ? *B_.body : *A_.body;
+    const materialModel& m = b.material();
+    const materialModel& mOther = other.material();
+    const scalar Z = m.rho()*m.cp();
+    const scalar ZOther = mOther.rho()*mOther.cp();
+    return
+        mag(b.initialVelocity() - other.initialVelocity())
+       *ZOther/(Z + ZOther)/m.cp();
+}
+
+
 void Foam::contactPair::chooseRiemannSolver
 (
     const solidBody& bodyA,

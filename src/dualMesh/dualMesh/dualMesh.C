@@ -475,6 +475,29 @@ Foam::tmp<Foam::scalarField> Foam::dualMesh::lengths() const
 }
 
 
+bool Foam::dualMesh::patchFlat
+(
+    const label patchi,
+    const scalar maxAngle
+) const
+{
+    const vectorField& A = patchSubFaces_[patchi].area;
+    const vector mean(returnReduce(sum(A), sumOp<vector>()));
+    if (mag(mean) < VSMALL)
+    {
+        return false;
+    }
+    const vector n(mean/mag(mean));
+    scalar minCos = 1;
+    forAll(A, s)
+    {
+        minCos = min(minCos, (A[s] & n)/max(mag(A[s]), VSMALL));
+    }
+    reduce(minCos, minOp<scalar>());
+    return minCos >= std::cos(degToRad(maxAngle));
+}
+
+
 Foam::scalar Foam::dualMesh::minLength() const
 {
     return gMin(lengths());

@@ -104,7 +104,8 @@ Foam::bodyScheme::bodyScheme
     const materialModel& m
 )
 :
-    dict_(solidProperties, dictionary(fileName("scheme")))
+    dict_(solidProperties, dictionary(fileName("scheme"))),
+    shockFromScene_(false)
 {
     if (solidProperties.isDict("scheme"))
     {
@@ -256,18 +257,28 @@ Foam::bodyScheme::bodyScheme
 
     // Behind a shock of a material whose wave speed grows with compression
     // the limiter's switching leaves a standing pattern of F (a neo-Hookean
-    // bar on a wall at 0.3 c_p: +-6 % about the exact stress), which the
+    // bar on a wall at 0.3 c_p: +-7 % about the exact stress), which the
     // average velocity of the F flux never damps.  The upwind F flux on
     // the edges a shock closes removes it (doc/results.md, "Shocks in
-    // non-linear elastic bodies").  Not chosen automatically: its sensor
-    // also fires in the contact zones of bending bodies, where the term
-    // more than doubles the dissipation (elastic torus 29 -> 67 %) or stops
-    // the run (ring, level 1), and it harms plastic and pressure-only flow
+    // non-linear elastic bodies").  Its sensor also fires in the contact
+    // zones of bending bodies, where the term doubles the dissipation (the
+    // ring, at impact Mach number 0.013: 11.5 -> 23.4 %), and it harms
+    // plastic and pressure-only flow.  So the automatic scheme uses it for
+    // finite-strain elastic materials with shear stiffness and no Hugoniot,
+    // in planar impacts (flat patches) strong enough to leave the noise
+    // above 1 % (chooseShockStabilisation; 1.15 % at Mach number 0.1)
+    shockFromScene_ =
+        automatic("shockStabilisation") && !plastic && !m.smallStrain()
+     && m.mu() > 0 && !m.hugoniot() && !FStabilisation_;
     shockStabilisation_ = choose
     (
         "shockStabilisation", false,
-        "opt-in: removes the noise behind non-linear elastic shocks"
-        " (doc/results.md)"
+        shockFromScene_
+      ? string("for now: chosen from the scene's impact speeds")
+      : FStabilisation_
+      ? string("the upwind F flux already upwinds F")
+      : string("plastic, small-strain or pressure-dominated material:"
+        " it would damp or stop the flow")
     );
 
     boundarySlope_ = choose
@@ -281,7 +292,46 @@ Foam::bodyScheme::bodyScheme
 }
 
 
+const Foam::scalar Foam::bodyScheme::shockMachThreshold = 0.08;
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bodyScheme::chooseShockStabilisation(const scalar shockMach)
+{
+    if (!shockFromScene_)
+    {
+        return;
+    }
+    shockStabilisation_ = (shockMach >= shockMachThreshold);
+    OStringStream why;
+    if (shockMach > 0)
+    {
+        why << "auto: planar impact at Mach number " << shockMach
+            << (shockStabilisation_ ? " >= " : " < ") << shockMachThreshold
+            << (
+                   shockStabilisation_
+                 ? ", where the limiter leaves noise behind the shocks"
+                 : ": weak shocks"
+               );
+    }
+    else
+    {
+        why << "auto: no planar impact (a flat wall or contact patch closing"
+            << " at the initial velocities); in bending and curved contact"
+            << " it doubles the dissipation";
+    }
+    for (Tuple2<word, string>& c : choices_)
+    {
+        if (c.first() == "shockStabilisation")
+        {
+            c.second() =
+                word(shockStabilisation_ ? "yes" : "no") + "  ("
+              + why.str() + ")";
+        }
+    }
+}
+
 
 void Foam::bodyScheme::describe(Ostream& os, const word& indent) const
 {

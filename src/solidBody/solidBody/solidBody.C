@@ -368,6 +368,24 @@ Foam::label Foam::solidBody::nGlobalPoints() const
 }
 
 
+const Foam::scalar Foam::solidBody::planarImpactAngle = 10;
+
+
+Foam::scalar Foam::solidBody::wallImpactMach() const
+{
+    scalar speed = 0;
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        const scalar s = bc.closingSpeed(initialVelocity_);
+        if (s > 0 && dual_.patchFlat(bc.patchi(), planarImpactAngle))
+        {
+            speed = max(speed, s);
+        }
+    }
+    return speed/material_->cp();
+}
+
+
 bool Foam::solidBody::driven() const
 {
     bool driven = magSqr(bodyForce_) > 0;

@@ -316,7 +316,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     // internal faces
     mesh_.clearGeom();
     mesh_.clearAddressing();
-    releaseInternalFaces();
+    releaseUnusedMesh();
     malloc_trim(0);
     checkDecomposition();
 
@@ -1075,7 +1075,7 @@ Foam::symmTensor Foam::solidBody::cauchyStress(const label i) const
 }
 
 
-void Foam::solidBody::releaseInternalFaces()
+void Foam::solidBody::releaseUnusedMesh()
 {
     // Nothing reads the internal faces once the dual is built: the
     // boundary conditions, contact, point fields (pointMesh) and processor

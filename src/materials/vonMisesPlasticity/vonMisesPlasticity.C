@@ -43,7 +43,11 @@ void Foam::materialModels::vonMisesPlasticity::returnMap
     m << be.xx(), be.xy(), be.xz(),
          be.xy(), be.yy(), be.yz(),
          be.xz(), be.yz(), be.zz();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);
+    // The closed-form (trigonometric) solution of the symmetric 3x3
+    // problem: the iterative QR solver made this function half of a
+    // plastic run's time
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+    eig.computeDirect(m);
 
     const scalar lnJ3 = log(J)/3.0;
     for (direction a = 0; a < 3; ++a)

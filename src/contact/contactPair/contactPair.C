@@ -1495,9 +1495,8 @@ Foam::scalar Foam::contactPair::impactMach(const solidBody& b) const
     }
     const solidBody& other = (A_.body == &b) ? *B_.body : *A_.body;
     const materialModel& m = b.material();
-    const materialModel& mOther = other.material();
-    const scalar Z = m.rho()*m.cp();
-    const scalar ZOther = mOther.rho()*mOther.cp();
+    const scalar Z = m.Zp();
+    const scalar ZOther = other.material().Zp();
     return
         mag(b.initialVelocity() - other.initialVelocity())
        *ZOther/(Z + ZOther)/m.cp();

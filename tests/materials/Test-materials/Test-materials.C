@@ -376,7 +376,10 @@ int main(int argc, char *argv[])
 
     Info<< nl << (nFailed ? "FAILED " : "All checks passed ")
         << "(" << nFailed << " failed)" << endl;
-    return nFailed ? 1 : 0;
+    // (OpenFOAM v1912 ends a run with status 0 when the argList is
+    // destroyed after main returns, whatever main returned: leave here)
+    Pstream::exit(nFailed ? 1 : 0);
+    return 0;
 }
 
 

@@ -28,6 +28,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "Pstream.H"
 #include "acousticFormulas.H"
 #include "acoustic.H"
 #include "hugoniot.H"
@@ -220,7 +221,10 @@ int main(int argc, char *argv[])
 
     Info<< nl << (nFailed ? "FAILED " : "All checks passed ")
         << "(" << nFailed << " failed)" << endl;
-    return nFailed ? 1 : 0;
+    // (OpenFOAM v1912 ends a run with status 0 when the argList is
+    // destroyed after main returns, whatever main returned: leave here)
+    Pstream::exit(nFailed ? 1 : 0);
+    return 0;
 }
 
 

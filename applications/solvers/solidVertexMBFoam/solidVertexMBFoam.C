@@ -111,8 +111,12 @@ int main(int argc, char *argv[])
         runTime.setDeltaT(dt, false);
         ++runTime;
 
-        const label failed =
-            tvdRungeKutta2::step(bodies, contacts, t0, runTime.deltaTValue());
+        scalar stepFraction = 1;
+        const label failed = tvdRungeKutta2::step
+        (
+            bodies, contacts, t0, runTime.deltaTValue(), stepFraction
+        );
+        runTime.shortenStep(stepFraction);
 
         #include "checkState.H"
 
@@ -176,6 +180,13 @@ int main(int argc, char *argv[])
                 << stats.totalSteps()*tvdRungeKutta2::nStages
                 << " stages since t = 0 (smallest second-order weight "
                 << b.minEnergyBlending() << ")" << nl;
+        }
+        if (b.nRelaxedSteps())
+        {
+            Info<< "Body " << b.name() << ": the step's energy balance"
+                << " shortened the increment of " << b.nRelaxedSteps()
+                << " of " << stats.totalSteps() << " steps since t = 0"
+                << " (smallest factor " << b.minRelaxation() << ")" << nl;
         }
     }
     stats.report(Info);

@@ -245,6 +245,8 @@ void Foam::solidBody::readBookkeeping()
             readUniformEntry<label>(*state, "energyLimitedStages");
         minEnergyTheta_ =
             readUniformEntry<scalar>(*state, "minEnergyBlending");
+        nRelaxedSteps_ = state->getOrDefault<label>("relaxedSteps", 0);
+        minRelaxation_ = state->getOrDefault<scalar>("minRelaxation", 1);
     }
     else
     {
@@ -296,6 +298,9 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     riemann_(),
     nEnergyLimited_(0),
     minEnergyTheta_(1),
+    stepEnergy0_(0),
+    nRelaxedSteps_(0),
+    minRelaxation_(1),
     bcs_(),
     bodyForce_(getFiniteOrDefault<vector>(dict_, "bodyForce", Zero)),
     initialVelocity_
@@ -418,6 +423,10 @@ void Foam::solidBody::storeState()
     if (scheme_->HLaw()) H0_ = H_;
     if (scheme_->JLaw()) J0_ = J_;
     Wext0_ = Wext_;
+    if (checksStepEnergy())
+    {
+        stepEnergy0_ = kineticEnergy() + strainEnergy();
+    }
 }
 
 
@@ -957,6 +966,95 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
 }
 
 
+namespace
+{
+
+// U = U0 + gamma (U - U0)
+template<class Type>
+void relaxIncrement
+(
+    const Foam::scalar gamma,
+    const Foam::UList<Type>& U0,
+    Foam::UList<Type>& U
+)
+{
+    forAll(U, i)
+    {
+        U[i] = U0[i] + gamma*(U[i] - U0[i]);
+    }
+}
+
+} // End anonymous namespace
+
+
+bool Foam::solidBody::checksStepEnergy() const
+{
+    return scheme_->energyStable() && !material_->plastic();
+}
+
+
+Foam::scalar Foam::solidBody::stepEnergyExcess(const scalar gamma) const
+{
+    scalar E = 0;
+    if (gamma == 1)
+    {
+        E = kineticEnergy() + strainEnergy();
+    }
+    else
+    {
+        // The state U^n + gamma (U - U^n), in blocks of points (no lists
+        // of the size of the mesh)
+        const scalarField& V = dual_.volumes();
+        const scalar halfInvRho = 0.5/material_->rho();
+        const bool HLaw = scheme_->HLaw();
+        const bool JLaw = scheme_->JLaw();
+        const label blockSize = 256;
+        List<tensor> Fb(blockSize), Hb(blockSize);
+        List<scalar> Jb(blockSize), Wb(blockSize);
+        const label n = lm_.size();
+        for (label start = 0; start < n; start += blockSize)
+        {
+            const label m = min(blockSize, n - start);
+            for (label k = 0; k < m; ++k)
+            {
+                const label i = start + k;
+                Fb[k] = F0_[i] + gamma*(F_[i] - F0_[i]);
+                Hb[k] =
+                    HLaw ? H0_[i] + gamma*(H_[i] - H0_[i]) : cofactor(Fb[k]);
+                Jb[k] = JLaw ? J0_[i] + gamma*(J_[i] - J0_[i]) : det(Fb[k]);
+            }
+            SubList<scalar> W(Wb, m);
+            material_->energy
+            (
+                SubList<tensor>(Fb, m), SubList<tensor>(Hb, m),
+                SubList<scalar>(Jb, m), W
+            );
+            for (label k = 0; k < m; ++k)
+            {
+                const label i = start + k;
+                const vector lm(lm0_[i] + gamma*(lm_[i] - lm0_[i]));
+                E += dual_.pointWeight(i)*V[i]*(W[k] + halfInvRho*magSqr(lm));
+            }
+        }
+        reduce(E, sumOp<scalar>());
+    }
+    return E - stepEnergy0_ - gamma*(Wext_ - Wext0_);
+}
+
+
+void Foam::solidBody::relaxStep(const scalar gamma)
+{
+    relaxIncrement(gamma, lm0_, lm_);
+    relaxIncrement(gamma, u0_, u_);
+    relaxIncrement(gamma, F0_, F_);
+    if (scheme_->HLaw()) relaxIncrement(gamma, H0_, H_);
+    if (scheme_->JLaw()) relaxIncrement(gamma, J0_, J_);
+    Wext_ = Wext0_ + gamma*(Wext_ - Wext0_);
+    ++nRelaxedSteps_;
+    minRelaxation_ = min(minRelaxation_, gamma);
+}
+
+
 void Foam::solidBody::applyConstraints()
 {
     symmetry_->apply(lm_, u_);
@@ -1157,6 +1255,8 @@ void Foam::solidBody::write()
     state.add("plasticDissipation", Dplastic_);
     state.add("energyLimitedStages", nEnergyLimited_);
     state.add("minEnergyBlending", minEnergyTheta_);
+    state.add("relaxedSteps", nRelaxedSteps_);
+    state.add("minRelaxation", minRelaxation_);
     writeUniformState("bodyState", mesh_, state);
 }
 

@@ -226,6 +226,23 @@ Foam::scalar Foam::solverTime::stepToTargets(const scalar dt) const
 }
 
 
+void Foam::solverTime::shortenStep(const scalar fraction)
+{
+    if (!(fraction < 1))
+    {
+        return;
+    }
+    const scalar dt = deltaTValue();
+    if (writeTime_ && writeControl_ == wcAdjustableRunTime)
+    {
+        writeTime_ = false;
+        --writeTimeIndex_;
+    }
+    setTime(value() - (1 - fraction)*dt, timeIndex());
+    setDeltaT(fraction*dt, false);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::solverTime::solverTime(const argList& args)

@@ -7,15 +7,18 @@ Application
 
 Description
     Limiters on the case's (tet) mesh:
-      - barthJespersen and vanAlbada reconstruct a linear field exactly to
-        the edge midpoints (Barth-Jespersen: Phi = 1);
+      - barthJespersen, vanAlbada and superbee reconstruct a linear field
+        exactly to the edge midpoints (Barth-Jespersen: Phi = 1);
       - barthJespersen, random field: the limited midpoint values
         f_i + 1/2 Phi G dX stay within the neighbourhood extrema
         [fmin_i, fmax_i] (no new extrema) and Phi is in [0, 1];
-      - vanAlbada, random field: both midpoint states of every edge lie
-        between f_i and f_j, and on a field with a smooth maximum (a
-        paraboloid) only edges near the maximum are limited, by less than
-        the Barth-Jespersen limiter.
+      - vanAlbada and superbee, random field: both midpoint states of every
+        edge lie between f_i and f_j, and superbee's increments are never
+        smaller than van Albada's (it is the upper edge of the TVD region),
+        and larger on a good part of the edges;
+      - vanAlbada on a field with a smooth maximum (a paraboloid): only
+        edges near the maximum are limited, by less than the
+        Barth-Jespersen limiter.
     Exits non-zero if a check fails.
 
     With -dump <file>: the Barth-Jespersen limited gradients of a field that
@@ -95,6 +98,10 @@ int main(int argc, char *argv[])
     const label nPts = mesh.nPoints();
     label nFailed = 0;
 
+    // The gradients are stored in single precision (fluxState.H): the
+    // reconstructed increments carry a few float epsilons of their size
+    const scalar floatTol = 64*std::numeric_limits<float>::epsilon();
+
     autoPtr<limiter> bj(limiter::New("barthJespersen", dictionary()));
     List<fluxState> q(nPts), phi(nPts);
     List<fluxStateGradient> G(nPts);
@@ -142,7 +149,7 @@ int main(int argc, char *argv[])
     };
 
     // Linear field: exact midpoint states with both limiters
-    for (const word type : {"barthJespersen", "vanAlbada"})
+    for (const word type : {"barthJespersen", "vanAlbada", "superbee"})
     {
         autoPtr<limiter> lim(limiter::New(type, dictionary()));
         fluxState a;
@@ -162,12 +169,16 @@ int main(int argc, char *argv[])
         greenGaussGradient(dual, q, G);
         lim->limit(dual, q, G);
 
-        scalar maxErr = 0;
+        scalar maxErr = 0, maxJump = 0;
         fluxState qL, qR;
         forAll(es, e)
         {
             const label i = es[e], j = ee[e];
             const point mid(0.5*(X[i] + X[j]));
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                maxJump = max(maxJump, mag(q[j][c] - q[i][c]));
+            }
             lim->midpointStates
             (
                 q[i], q[j], G[i], G[j], 0.5*(X[j] - X[i]), qL, qR
@@ -179,9 +190,10 @@ int main(int argc, char *argv[])
                     max(maxErr, max(mag(qL[c] - exact), mag(qR[c] - exact)));
             }
         }
-        const bool ok = maxErr < 1e-10;
+        const bool ok = maxErr < floatTol*maxJump;
         Info<< (ok ? "PASS" : "FAIL") << " " << type
-            << ", linear field: largest midpoint error " << maxErr << endl;
+            << ", linear field: largest midpoint error " << maxErr
+            << " (tolerance " << floatTol*maxJump << ")" << endl;
         nFailed += !ok;
     }
 
@@ -231,8 +243,9 @@ int main(int argc, char *argv[])
             }
         }
         const bool ok =
-            overshoot < 1e-12 && phiMin >= 0 && phiMax <= 1 + 1e-14
-         && misfit < 1e-12 && limited > 0.1*total;
+            overshoot < floatTol && phiMin >= -floatTol
+         && phiMax <= 1 + floatTol
+         && misfit < floatTol && limited > 0.1*total;
         Info<< (ok ? "PASS" : "FAIL") << " random field: largest overshoot "
             << overshoot << ", Phi in [" << phiMin << ", " << phiMax
             << "], " << 100*limited/total << " % of values limited, "
@@ -241,15 +254,19 @@ int main(int argc, char *argv[])
 
     }
 
-    // van Albada, random field: midpoint states between the end values
+    // van Albada and superbee, random field: midpoint states between the
+    // end values; superbee's increments at least van Albada's
     autoPtr<limiter> va(limiter::New("vanAlbada", dictionary()));
+    autoPtr<limiter> sb(limiter::New("superbee", dictionary()));
     {
         randomField(11);
         greenGaussGradient(dual, q, G);
         va->limit(dual, q, G);
+        sb->limit(dual, q, G);
 
-        scalar outside = 0, firstOrder = 0, total = 0;
-        fluxState qL, qR;
+        scalar outsideVA = 0, outsideSB = 0, belowVA = 0;
+        scalar firstOrder = 0, steeper = 0, total = 0;
+        fluxState qL, qR, qLs, qRs;
         forAll(es, e)
         {
             const label i = es[e], j = ee[e];
@@ -258,21 +275,38 @@ int main(int argc, char *argv[])
             (
                 q[i], q[j], G[i], G[j], halfdX, qL, qR
             );
+            sb->midpointStates
+            (
+                q[i], q[j], G[i], G[j], halfdX, qLs, qRs
+            );
             for (direction c = 0; c < nFluxComponents; ++c)
             {
                 const scalar lo = min(q[i][c], q[j][c]);
                 const scalar hi = max(q[i][c], q[j][c]);
-                outside = max(outside, max(qL[c] - hi, lo - qL[c]));
-                outside = max(outside, max(qR[c] - hi, lo - qR[c]));
+                outsideVA = max(outsideVA, max(qL[c] - hi, lo - qL[c]));
+                outsideVA = max(outsideVA, max(qR[c] - hi, lo - qR[c]));
+                outsideSB = max(outsideSB, max(qLs[c] - hi, lo - qLs[c]));
+                outsideSB = max(outsideSB, max(qRs[c] - hi, lo - qRs[c]));
+                // (increments towards the other end: |qL - f_i|)
+                const scalar dVA = mag(qL[c] - q[i][c]);
+                const scalar dSB = mag(qLs[c] - q[i][c]);
+                belowVA = max(belowVA, dVA - dSB);
+                steeper += (dSB > dVA*(1 + 1e-12));
                 firstOrder += (qL[c] == q[i][c]) + (qR[c] == q[j][c]);
                 total += 2;
             }
         }
-        const bool ok = outside < 1e-12;
+        bool ok = outsideVA < 1e-12;
         Info<< (ok ? "PASS" : "FAIL") << " vanAlbada, random field: largest "
-            << "midpoint state outside [f_i, f_j] " << outside << ", "
+            << "midpoint state outside [f_i, f_j] " << outsideVA << ", "
             << 100*firstOrder/total << " % of edge states first order"
             << endl;
+        nFailed += !ok;
+        ok = outsideSB < 1e-12 && belowVA < 1e-12 && steeper > 0.1*total;
+        Info<< (ok ? "PASS" : "FAIL") << " superbee, random field: largest "
+            << "midpoint state outside [f_i, f_j] " << outsideSB
+            << ", largest increment below van Albada's " << belowVA << ", "
+            << 200*steeper/total << " % of edge increments larger" << endl;
         nFailed += !ok;
     }
 
@@ -327,7 +361,10 @@ int main(int argc, char *argv[])
     }
 
     Info<< nl << (nFailed ? "FAILED" : "All checks passed") << endl;
-    return nFailed ? 1 : 0;
+    // (OpenFOAM v1912 ends a run with status 0 when the argList is
+    // destroyed after main returns, whatever main returned: leave here)
+    Pstream::exit(nFailed ? 1 : 0);
+    return 0;
 }
 
 

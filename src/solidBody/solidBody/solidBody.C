@@ -301,6 +301,10 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     stepEnergy0_(0),
     nRelaxedSteps_(0),
     minRelaxation_(1),
+    kineticEnergy_(0),
+    strainEnergy_(0),
+    kineticEnergyKnown_(false),
+    strainEnergyKnown_(false),
     bcs_(),
     bodyForce_(getFiniteOrDefault<vector>(dict_, "bodyForce", Zero)),
     initialVelocity_
@@ -432,6 +436,7 @@ void Foam::solidBody::storeState()
 
 void Foam::solidBody::restoreState()
 {
+    stateChanged();
     lm_ = lm0_;
     u_ = u0_;
     F_ = F0_;
@@ -444,6 +449,7 @@ void Foam::solidBody::restoreState()
 
 bool Foam::solidBody::updateConstitutive()
 {
+    stateChanged();
     const scalar invRho = 1.0/material_->rho();
 
     forAll(lm_, i)
@@ -921,6 +927,7 @@ void Foam::solidBody::finishResiduals()
 
 void Foam::solidBody::rkStage(const scalar dt, const scalar a)
 {
+    stateChanged();
     const scalarField& V = dual_.volumes();
     const vector rhoB(material_->rho()*bodyForce_);
     const List<tensor>& H = Hc();
@@ -1044,6 +1051,7 @@ Foam::scalar Foam::solidBody::stepEnergyExcess(const scalar gamma) const
 
 void Foam::solidBody::relaxStep(const scalar gamma)
 {
+    stateChanged();
     relaxIncrement(gamma, lm0_, lm_);
     relaxIncrement(gamma, u0_, u_);
     relaxIncrement(gamma, F0_, F_);
@@ -1057,6 +1065,7 @@ void Foam::solidBody::relaxStep(const scalar gamma)
 
 void Foam::solidBody::applyConstraints()
 {
+    stateChanged();
     symmetry_->apply(lm_, u_);
     // A point on a symmetry plane stands for its control volume completed
     // by the mirror image, which does not rotate about the plane's axes
@@ -1074,6 +1083,7 @@ void Foam::solidBody::endStep()
 {
     if (material_->plastic())
     {
+        stateChanged();
         material_->updateState(F_, Jc(), dDplastic_);
         forAll(dDplastic_, i)
         {
@@ -1106,28 +1116,38 @@ Foam::scalar Foam::solidBody::stableDeltaT() const
 
 Foam::scalar Foam::solidBody::kineticEnergy() const
 {
-    const scalarField& V = dual_.volumes();
-    scalarField e(lm_.size());
-    const scalar half = 0.5/material_->rho();
-    forAll(lm_, i)
+    if (!kineticEnergyKnown_)
     {
-        e[i] = half*V[i]*magSqr(lm_[i]);
+        const scalarField& V = dual_.volumes();
+        scalarField e(lm_.size());
+        const scalar half = 0.5/material_->rho();
+        forAll(lm_, i)
+        {
+            e[i] = half*V[i]*magSqr(lm_[i]);
+        }
+        kineticEnergy_ = dual_.sumPoints(e);
+        kineticEnergyKnown_ = true;
     }
-    return dual_.sumPoints(e);
+    return kineticEnergy_;
 }
 
 
 Foam::scalar Foam::solidBody::strainEnergy() const
 {
-    scalarField W(F_.size());
-    // Every change of F_ is followed by a stress evaluation
-    // (updateConstitutive): a model that kept its energy gives it
-    if (!material_->energyOfLastStress(W))
+    if (!strainEnergyKnown_)
     {
-        material_->energy(F_, Hc(), Jc(), W);
+        scalarField W(F_.size());
+        // Every change of F_ is followed by a stress evaluation
+        // (updateConstitutive): a model that kept its energy gives it
+        if (!material_->energyOfLastStress(W))
+        {
+            material_->energy(F_, Hc(), Jc(), W);
+        }
+        W *= dual_.volumes();
+        strainEnergy_ = dual_.sumPoints(W);
+        strainEnergyKnown_ = true;
     }
-    W *= dual_.volumes();
-    return dual_.sumPoints(W);
+    return strainEnergy_;
 }
 
 

@@ -204,6 +204,51 @@ void Foam::materialModels::vonMisesPlasticity::energy
 }
 
 
+void Foam::materialModels::vonMisesPlasticity::trialEnergy
+(
+    const label start,
+    const UList<tensor>& F,
+    const UList<tensor>& H,
+    const UList<scalar>& J,
+    UList<scalar>& W,
+    UList<scalar>& dD
+) const
+{
+    vector lnLam, tauDev;
+    tensor dirs, Fbar;
+    scalar dgamma, Jp;
+
+    forAll(F, k)
+    {
+        const label i = start + k;
+        returnMap
+        (
+            F[k], J[k], CpInv_[i], epsP_[i],
+            lnLam, dirs, tauDev, dgamma, Jp, Fbar
+        );
+        const scalar lnJ3 = log(J[k])/3.0;
+        W[k] =
+            mu_*(sqr(lnLam[0] - lnJ3) + sqr(lnLam[1] - lnJ3)
+               + sqr(lnLam[2] - lnJ3))
+          + volumetricEnergyHencky(J[k])
+          + couplingEnergy(det(F[k]), J[k]);
+        dD[k] = dgamma > 0 ? dgamma*sqrt(1.5)*mag(tauDev) : 0;
+    }
+}
+
+
+void Foam::materialModels::vonMisesPlasticity::dissipationOfLastStress
+(
+    UList<scalar>& dD
+) const
+{
+    forAll(dD, i)
+    {
+        dD[i] = returnedEpsP_[i] > epsP_[i] ? returnedDissipation_[i] : 0;
+    }
+}
+
+
 bool Foam::materialModels::vonMisesPlasticity::energyOfLastStress
 (
     UList<scalar>& W

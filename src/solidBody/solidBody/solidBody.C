@@ -996,16 +996,25 @@ void relaxIncrement
 
 bool Foam::solidBody::checksStepEnergy() const
 {
-    return scheme_->energyStable() && !material_->plastic();
+    return scheme_->energyStable();
 }
 
 
 Foam::scalar Foam::solidBody::stepEnergyExcess(const scalar gamma) const
 {
+    // The energy of the state, and for plastic bodies the dissipation the
+    // step's return map would commit (D = E0 + W_ext - E - D_plastic)
     scalar E = 0;
     if (gamma == 1)
     {
         E = kineticEnergy() + strainEnergy();
+        if (material_->plastic())
+        {
+            scalarField dD(F_.size());
+            material_->dissipationOfLastStress(dD);
+            dD *= dual_.volumes();
+            E += dual_.sumPoints(dD);
+        }
     }
     else
     {
@@ -1017,7 +1026,7 @@ Foam::scalar Foam::solidBody::stepEnergyExcess(const scalar gamma) const
         const bool JLaw = scheme_->JLaw();
         const label blockSize = 256;
         List<tensor> Fb(blockSize), Hb(blockSize);
-        List<scalar> Jb(blockSize), Wb(blockSize);
+        List<scalar> Jb(blockSize), Wb(blockSize), Db(blockSize);
         const label n = lm_.size();
         for (label start = 0; start < n; start += blockSize)
         {
@@ -1030,17 +1039,20 @@ Foam::scalar Foam::solidBody::stepEnergyExcess(const scalar gamma) const
                     HLaw ? H0_[i] + gamma*(H_[i] - H0_[i]) : cofactor(Fb[k]);
                 Jb[k] = JLaw ? J0_[i] + gamma*(J_[i] - J0_[i]) : det(Fb[k]);
             }
-            SubList<scalar> W(Wb, m);
-            material_->energy
+            SubList<scalar> W(Wb, m), dD(Db, m);
+            material_->trialEnergy
             (
+                start,
                 SubList<tensor>(Fb, m), SubList<tensor>(Hb, m),
-                SubList<scalar>(Jb, m), W
+                SubList<scalar>(Jb, m), W, dD
             );
             for (label k = 0; k < m; ++k)
             {
                 const label i = start + k;
                 const vector lm(lm0_[i] + gamma*(lm_[i] - lm0_[i]));
-                E += dual_.pointWeight(i)*V[i]*(W[k] + halfInvRho*magSqr(lm));
+                E +=
+                    dual_.pointWeight(i)*V[i]
+                   *(W[k] + dD[k] + halfInvRho*magSqr(lm));
             }
         }
         reduce(E, sumOp<scalar>());

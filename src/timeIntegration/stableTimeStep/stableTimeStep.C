@@ -231,7 +231,12 @@ Foam::scalar Foam::stableTimeStep::deltaT
         }
 
         // Face-area mean of |F^-T n|^2 = M : (F^-1 F^-T), with F^-T =
-        // H/det F: sum over the rows h_k of H of h_k . M . h_k/det(F)^2
+        // H/det F: sum over the rows h_k of H of h_k . M . h_k/det(F)^2.
+        // A volume grown beyond its reference one (det F > 1) does not
+        // slow the volumetric wave down: its Lagrangian stiffness along
+        // N is dSigma_J/dJ |H N|^2 whatever det F is (with the J law det
+        // F is held to J only by the weak tie), so det F counts only
+        // below one
         scalar stretch2 = 1;
         if (!M_.empty())
         {
@@ -248,7 +253,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
                 const vector hk(h(k, 0), h(k, 1), h(k, 2));
                 s2 += hk & (m & hk);
             }
-            stretch2 = max(s2/max(detF2, VSMALL), 1.0);
+            stretch2 = max(s2/max(min(detF2, 1.0), VSMALL), 1.0);
         }
 
         // Momentum: the wave speed times the stretch of the faces; J

@@ -183,24 +183,37 @@ void Foam::materialModels::vonMisesPlasticity::energy
     UList<scalar>& W
 ) const
 {
+    scalar dD;
+    forAll(F, i)
+    {
+        W[i] = trialPointEnergy(i, F[i], J[i], dD);
+    }
+}
+
+
+Foam::scalar Foam::materialModels::vonMisesPlasticity::trialPointEnergy
+(
+    const label i,
+    const tensor& F,
+    const scalar J,
+    scalar& dD
+) const
+{
     vector lnLam, tauDev;
     tensor dirs, Fbar;
     scalar dgamma, Jp;
-
-    forAll(F, i)
-    {
-        returnMap
-        (
-            F[i], J[i], CpInv_[i], epsP_[i],
-            lnLam, dirs, tauDev, dgamma, Jp, Fbar
-        );
-        const scalar lnJ3 = log(J[i])/3.0;
-        W[i] =
-            mu_*(sqr(lnLam[0] - lnJ3) + sqr(lnLam[1] - lnJ3)
-               + sqr(lnLam[2] - lnJ3))
-          + volumetricEnergyHencky(J[i])
-          + couplingEnergy(det(F[i]), J[i]);
-    }
+    returnMap
+    (
+        F, J, CpInv_[i], epsP_[i],
+        lnLam, dirs, tauDev, dgamma, Jp, Fbar
+    );
+    dD = dgamma > 0 ? dgamma*sqrt(1.5)*mag(tauDev) : 0;
+    const scalar lnJ3 = log(J)/3.0;
+    return
+        mu_*(sqr(lnLam[0] - lnJ3) + sqr(lnLam[1] - lnJ3)
+           + sqr(lnLam[2] - lnJ3))
+      + volumetricEnergyHencky(J)
+      + couplingEnergy(det(F), J);
 }
 
 
@@ -214,25 +227,9 @@ void Foam::materialModels::vonMisesPlasticity::trialEnergy
     UList<scalar>& dD
 ) const
 {
-    vector lnLam, tauDev;
-    tensor dirs, Fbar;
-    scalar dgamma, Jp;
-
     forAll(F, k)
     {
-        const label i = start + k;
-        returnMap
-        (
-            F[k], J[k], CpInv_[i], epsP_[i],
-            lnLam, dirs, tauDev, dgamma, Jp, Fbar
-        );
-        const scalar lnJ3 = log(J[k])/3.0;
-        W[k] =
-            mu_*(sqr(lnLam[0] - lnJ3) + sqr(lnLam[1] - lnJ3)
-               + sqr(lnLam[2] - lnJ3))
-          + volumetricEnergyHencky(J[k])
-          + couplingEnergy(det(F[k]), J[k]);
-        dD[k] = dgamma > 0 ? dgamma*sqrt(1.5)*mag(tauDev) : 0;
+        W[k] = trialPointEnergy(start + k, F[k], J[k], dD[k]);
     }
 }
 

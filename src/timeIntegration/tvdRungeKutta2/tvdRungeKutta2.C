@@ -5,6 +5,8 @@
 
 #include "tvdRungeKutta2.H"
 
+#include <functional>
+
 Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
 (
     const PtrList<solidBody>& bodies,
@@ -64,7 +66,7 @@ void residuals
 
 // The factor gamma <= 1 of the step's increment that keeps the numerical
 // dissipation of every checking body from falling (doc/method.md, section
-// 8): f(gamma) = E(U^n + gamma dU) - E^n - gamma dWext is convex with
+// 5): f(gamma) = E(U^n + gamma dU) - E^n - gamma dWext is convex with
 // f(0) = 0 and nearly a parabola; its positive root, from f(1) and f(1/2)
 Foam::scalar stepRelaxation(const Foam::PtrList<Foam::solidBody>& bodies)
 {
@@ -145,29 +147,38 @@ Foam::label Foam::tvdRungeKutta2::step
     {
         c.startStep(dt);
     }
-    residuals(bodies, contacts, t);
-    forAll(bodies, b)
+    // Each update of the state is followed by the constraints and the
+    // check of the new state: returns the first body whose state became
+    // invalid, or -1
+    auto updateAll = [&bodies](const std::function<void(solidBody&)>& update)
     {
-        bodies[b].rkStage(dt, 0);
-        bodies[b].applyConstraints();
-        if (!bodies[b].updateConstitutive())
+        forAll(bodies, b)
         {
-            return b;
+            update(bodies[b]);
+            bodies[b].applyConstraints();
+            if (!bodies[b].updateConstitutive())
+            {
+                return b;
+            }
         }
+        return label(-1);
+    };
+
+    residuals(bodies, contacts, t);
+    label failed = updateAll([dt](solidBody& b){ b.rkStage(dt, 0); });
+    if (failed >= 0)
+    {
+        return failed;
     }
     residuals(bodies, contacts, t + dt);
-    forAll(bodies, b)
+    failed = updateAll([dt](solidBody& b){ b.rkStage(dt, 0.5); });
+    if (failed >= 0)
     {
-        bodies[b].rkStage(dt, 0.5);
-        bodies[b].applyConstraints();
-        if (!bodies[b].updateConstitutive())
-        {
-            return b;
-        }
+        return failed;
     }
 
     // The step's energy balance: the two-stage combination adds
-    // dt^2/8 |L1 - L2|^2 to the energy, which no stage's residual sees;
+    // dt^2/8 |R1 - R2|^2 to the energy, which no stage's residual sees;
     // where it would make the numerical dissipation fall, shorten the
     // increment of every body alike (contact impulses stay equal and
     // opposite)
@@ -175,15 +186,7 @@ Foam::label Foam::tvdRungeKutta2::step
     if (gamma < 1)
     {
         fraction = gamma;
-        forAll(bodies, b)
-        {
-            bodies[b].relaxStep(gamma);
-            bodies[b].applyConstraints();
-            if (!bodies[b].updateConstitutive())
-            {
-                return b;
-            }
-        }
+        return updateAll([gamma](solidBody& b){ b.relaxStep(gamma); });
     }
     return -1;
 }

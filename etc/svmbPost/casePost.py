@@ -307,6 +307,12 @@ def main():
                 jb, xb = smoothness_subset(p, ke, keep, 1e-2*scale)
                 entry[b].update({'maxJumpBulk': jb, 'extremaFractionBulk': xb})
             x = X[b] + u
+            # The shortest edge against its reference length: a crushed
+            # edge (a contact corner rolling over) shows here first
+            e = edges[b]
+            stretch = np.linalg.norm(x[e[:, 0]] - x[e[:, 1]], axis=1) \
+                / np.linalg.norm(X[b][e[:, 0]] - X[b][e[:, 1]], axis=1)
+            entry[b]['minEdgeStretch'] = float(stretch.min())
             if args.plane is not None:
                 c = 'xyz'.index(args.plane)
                 size = np.ptp(X[b], axis=0).max()
@@ -339,6 +345,8 @@ def main():
             e[b]['maxJump'] for e in smooth for b in names if b in e)
         summary['maxExtremaFraction'] = max(
             e[b]['extremaFraction'] for e in smooth for b in names if b in e)
+        summary['minEdgeStretch'] = min(
+            e[b]['minEdgeStretch'] for e in smooth for b in names if b in e)
         if args.contact_patch:
             summary['maxPressureJumpBulk'] = max(
                 e[b]['maxJumpBulk'] for e in smooth for b in names if b in e)

@@ -181,6 +181,12 @@ int main(int argc, char *argv[])
                 << " stages since t = 0 (smallest second-order weight "
                 << b.minEnergyBlending() << ")" << nl;
         }
+        if (b.scheme().contactRotation() && b.contactRotations().anyPoints())
+        {
+            Info<< "Body " << b.name() << ": contactRotation turned the F"
+                << " of closed contact points by at most "
+                << b.contactRotations().largestTurn() << " degrees" << nl;
+        }
         if (b.nRelaxedSteps())
         {
             Info<< "Body " << b.name() << ": the step's energy balance"

@@ -1923,6 +1923,7 @@ void Foam::contactPair::startStep(const scalar dt)
         }
         B_.closed =
             byMajority(B_, B_.pairIndex, exchangedPairs(closedPairs));
+        markClosed();
         return;
     }
 
@@ -1956,6 +1957,16 @@ void Foam::contactPair::startStep(const scalar dt)
             B_.gap0[i] = pairGap(partner, b[i]);
         }
     }
+    markClosed();
+}
+
+
+void Foam::contactPair::markClosed()
+{
+    // The bodies keep the normals of their closed points on their deformed
+    // surfaces (contactRotation.H)
+    A_.body->contactRotations().setClosed(A_.points, A_.closed);
+    B_.body->contactRotations().setClosed(B_.points, B_.closed);
 }
 
 

@@ -131,7 +131,7 @@ Foam::bodyScheme::bodyScheme
         {
             "secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw",
             "energyStable", "riemannSolver", "FStabilisation",
-            "shockStabilisation", "boundarySlope"
+            "shockStabilisation", "boundarySlope", "contactRotation"
         }
     );
 
@@ -173,6 +173,29 @@ Foam::bodyScheme::bodyScheme
       : kind + ": det F carries the volume, with less damping"
     );
     HLaw_ = choose("HLaw", false, "H = cof F is exact and stores nothing");
+
+    // A closed contact point's F keeps its normal on the deformed surface
+    // (contactRotation.H): without it a contact corner's F turned under
+    // compression until J < 0 (the nearly incompressible bars at cfl 0.3).
+    // A rotation leaves a finite-strain energy unchanged, not a small-
+    // strain one
+    contactRotation_ = choose
+    (
+        "contactRotation", !m.smallStrain(),
+        m.smallStrain()
+      ? string("small strain: its energy is not invariant under rotation")
+      : string("closed contact points keep their normal on the deformed"
+        " surface")
+    );
+    if (contactRotation_ && m.smallStrain())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "contactRotation yes in " << dict_.name() << " needs a"
+            << " finite-strain material (the rotation would change a"
+            << " small-strain energy)." << nl
+            << "    Valid for this material: no (or auto)"
+            << exit(FatalIOError);
+    }
 
     // (the list of solvers is checked by interiorRiemannSolver::New)
     riemannSolver_ = choose

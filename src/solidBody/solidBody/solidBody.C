@@ -338,6 +338,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     createBoundaryConditions();
     symmetry_.reset(new symmetryConstraint(dual_, bcs_));
     planeStrain_.reset(new planeStrainTie(dual_, bcs_, dict_, name_));
+    contactRotation_.reset(new contactRotation(dual_, bcs_));
     stableStep_.reset
     (
         new stableTimeStep(dual_, material_(), bcs_, scheme_->JLaw())
@@ -1078,6 +1079,14 @@ void Foam::solidBody::relaxStep(const scalar gamma)
 void Foam::solidBody::applyConstraints()
 {
     stateChanged();
+    // A closed contact point's normal stays on the deformed surface
+    // (contactRotation.H); before the symmetry planes, which then take out
+    // any turn about their own axes (bodyScheme: not for small-strain
+    // materials, whose energy a rotation changes)
+    if (scheme_->contactRotation())
+    {
+        contactRotation_->apply(u_, F_, scheme_->HLaw() ? &H_ : nullptr);
+    }
     symmetry_->apply(lm_, u_);
     // A point on a symmetry plane stands for its control volume completed
     // by the mirror image, which does not rotate about the plane's axes

@@ -15,7 +15,9 @@ namespace
 {
 
 //- The smallest rotation taking unit vector a onto unit vector b (identity
-//  when they are opposite)
+//  when they are opposite).  Not Foam::rotationTensor: it returns I below
+//  a turn of about 3e-8 rad (a cut-off that let serial and parallel runs
+//  part, see apply) and a reflection for opposite vectors
 Foam::tensor rotationOnto(const Foam::vector& a, const Foam::vector& b)
 {
     using namespace Foam;
@@ -119,8 +121,7 @@ Foam::contactRotation::contactRotation
     n_.setSize(points_.size());
 
     // Reference normals
-    const List<vector> zero(mesh.nPoints(), Zero);
-    surfaceNormals(mesh.points(), zero, N_);
+    surfaceNormals(mesh.points(), nullptr, N_);
     forAll(N_, k)
     {
         N_[k] /= max(mag(N_[k]), VSMALL);
@@ -133,21 +134,25 @@ Foam::contactRotation::contactRotation
 void Foam::contactRotation::surfaceNormals
 (
     const pointField& X,
-    const UList<vector>& u,
+    const UList<vector>* u,
     List<vector>& n
 ) const
 {
+    auto x = [&](const label k)
+    {
+        const label p = points_[k];
+        return u ? X[p] + (*u)[p] : X[p];
+    };
+
     // Area vectors of this processor's faces (twice the area, outward)
     forAll(faces_, fi)
     {
         const face& f = faces_[fi];
-        const label p0 = points_[f[0]];
-        const point x0(X[p0] + u[p0]);
+        const point x0(x(f[0]));
         vector A(Zero);
         for (label i = 1; i + 1 < f.size(); ++i)
         {
-            const label a = points_[f[i]], b = points_[f[i + 1]];
-            A += ((X[a] + u[a] - x0) ^ (X[b] + u[b] - x0));
+            A += ((x(f[i]) - x0) ^ (x(f[i + 1]) - x0));
         }
         faceArea_[fi] = A;
     }
@@ -249,7 +254,7 @@ void Foam::contactRotation::apply
         return;
     }
 
-    surfaceNormals(dual_.mesh().points(), u, n_);
+    surfaceNormals(dual_.mesh().points(), &u, n_);
 
     forAll(points_, k)
     {

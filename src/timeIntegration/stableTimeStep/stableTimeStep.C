@@ -159,7 +159,8 @@ Foam::stableTimeStep::stableTimeStep
     // J stabilisation: Omega dJ/dt gains sum_j S_ij (Sigma_J,j - Sigma_J,i)
     // with S_ij = |C|/(2 rho c_p) (undeformed) and dSigma_J/dJ = k = kappa
     // + tie (the volumetric stiffness and the det F - J tie): a
-    // checkerboard of J decays at r = k S_int/(rho c_p V).  A small-strain
+    // checkerboard of J decays at r = k S_int/(rho c_p V), S_int with the
+    // draining boundary faces weighted by boundaryJWeight.  A small-strain
     // material takes its pressure from tr F, not from J: J is then carried
     // along without acting back, and sets no limit.  deltaT() evaluates the
     // rate from the state's coefficients (sJ_); here only the undeformed

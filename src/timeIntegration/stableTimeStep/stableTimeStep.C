@@ -126,9 +126,6 @@ Foam::stableTimeStep::stableTimeStep
         }
     }
 
-    bPoint_.transfer(bPoint);
-    bArea_.transfer(bArea);
-
     if (Pstream::parRun())
     {
         const polyMesh& mesh = dual.mesh();
@@ -169,6 +166,8 @@ Foam::stableTimeStep::stableTimeStep
     if (JRate)
     {
         sJ_.setSize(nPts);
+        bPoint_.transfer(bPoint);
+        bArea_.transfer(bArea);
     }
     const scalar k = material.kappa() + material.tieModulus();
     forAll(rMomentum_, i)

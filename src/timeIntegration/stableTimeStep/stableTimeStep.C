@@ -101,7 +101,8 @@ Foam::stableTimeStep::stableTimeStep
         normalConstrained[bc.patchi()] = bc.constrainsNormal();
     }
     DynamicList<label> bPoint;
-    DynamicList<vector> bArea;
+    DynamicList<scalar> bMagA;
+    DynamicList<vector> bNormal;
     forAll(normalConstrained, patchi)
     {
         const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
@@ -121,7 +122,8 @@ Foam::stableTimeStep::stableTimeStep
                 T[i] += nn;
                 Sint[i] += boundaryJWeight*magA;
                 bPoint.append(i);
-                bArea.append(sf.area[s]);
+                bMagA.append(magA);
+                bNormal.append(sf.area[s]/magA);
             }
         }
     }
@@ -167,7 +169,8 @@ Foam::stableTimeStep::stableTimeStep
     {
         sJ_.setSize(nPts);
         bPoint_.transfer(bPoint);
-        bArea_.transfer(bArea);
+        bMagA_.transfer(bMagA);
+        bNormal_.transfer(bNormal);
     }
     const scalar k = material.kappa() + material.tieModulus();
     forAll(rMomentum_, i)
@@ -238,8 +241,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
         forAll(bPoint_, b)
         {
             const label i = bPoint_[b];
-            const scalar magA = mag(bArea_[b]);
-            sJ_[i] += boundaryJWeight*magA*magSqr(H[i] & (bArea_[b]/magA));
+            sJ_[i] += boundaryJWeight*bMagA_[b]*magSqr(H[i] & bNormal_[b]);
         }
         if (Pstream::parRun())
         {

@@ -1478,7 +1478,11 @@ Foam::contactPair::contactPair
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::contactPair::impactMach(const solidBody& b) const
+Foam::scalar Foam::contactPair::impactMach
+(
+    const solidBody& b,
+    const bool planarOnly
+) const
 {
     if (A_.body != &b && B_.body != &b)
     {
@@ -1487,8 +1491,11 @@ Foam::scalar Foam::contactPair::impactMach(const solidBody& b) const
     // (a planar impact: both contact patches flat)
     if
     (
+        planarOnly
+     && (
         !A_.body->dual().patchFlat(A_.patchi, solidBody::planarImpactAngle)
      || !B_.body->dual().patchFlat(B_.patchi, solidBody::planarImpactAngle)
+        )
     )
     {
         return 0;

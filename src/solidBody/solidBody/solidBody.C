@@ -381,13 +381,17 @@ Foam::label Foam::solidBody::nGlobalPoints() const
 const Foam::scalar Foam::solidBody::planarImpactAngle = 10;
 
 
-Foam::scalar Foam::solidBody::wallImpactMach() const
+Foam::scalar Foam::solidBody::wallImpactMach(const bool planarOnly) const
 {
     scalar speed = 0;
     for (const solidBoundaryCondition& bc : bcs_)
     {
         const scalar s = bc.closingSpeed(initialVelocity_);
-        if (s > 0 && dual_.patchFlat(bc.patchi(), planarImpactAngle))
+        if
+        (
+            s > 0
+         && (!planarOnly || dual_.patchFlat(bc.patchi(), planarImpactAngle))
+        )
         {
             speed = max(speed, s);
         }
@@ -404,6 +408,20 @@ bool Foam::solidBody::driven() const
         driven = driven || bc.drives();
     }
     return driven;
+}
+
+
+void Foam::solidBody::chooseFromScene
+(
+    const scalar planarMach,
+    const scalar impactMach
+)
+{
+    scheme_->chooseFromScene(planarMach, impactMach);
+    if (scheme_->secondOrder() && limiter_->type() != scheme_->limiter())
+    {
+        limiter_ = limiter::New(scheme_->limiter(), scheme_->dict());
+    }
 }
 
 

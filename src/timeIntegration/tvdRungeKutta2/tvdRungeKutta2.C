@@ -97,8 +97,11 @@ Foam::scalar stepRelaxation(const Foam::PtrList<Foam::solidBody>& bodies)
         // two-stage combination's own error grows as g^2: a fall that does
         // not vanish with g (alpha >= 0: the work of the boundary and
         // contact fluxes, a quadrature, not balanced exactly), or a root
-        // below one half, is not the combination's, and a shorter step
-        // would not remove it: the step is left as it is
+        // below one quarter, is not the combination's, and a shorter step
+        // would not remove it: the step is left as it is.  (Roots of 0.44-
+        // 0.5 are the combination's: the elastic torus with superbee in
+        // free flight, alpha -1.3e-6 and beta 2.9e-6 of the energy, where
+        // both stages' fluxes are blended to zero production.)
         scalar g = 0.5;
         scalar fg = b.stepEnergyExcess(g);
         scalar gb = 1;
@@ -108,7 +111,7 @@ Foam::scalar stepRelaxation(const Foam::PtrList<Foam::solidBody>& bodies)
             const scalar beta = (fg/g - f1)/(g - 1);
             const scalar alpha = f1 - beta;
             const scalar root = -alpha/max(beta, VSMALL)*(1 - 1e-6);
-            if (!(alpha < 0 && beta > 0 && root >= 0.5 && root < 1))
+            if (!(alpha < 0 && beta > 0 && root >= 0.25 && root < 1))
             {
                 break;
             }

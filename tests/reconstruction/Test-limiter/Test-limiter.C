@@ -7,7 +7,8 @@ Application
 
 Description
     Limiters on the case's (tet) mesh:
-      - barthJespersen, vanAlbada and superbee reconstruct a linear field
+      - barthJespersen, vanAlbada, monotonizedCentral and superbee
+        reconstruct a linear field
         exactly to the edge midpoints (Barth-Jespersen: Phi = 1);
       - barthJespersen, random field: the limited midpoint values
         f_i + 1/2 Phi G dX stay within the neighbourhood extrema
@@ -15,7 +16,8 @@ Description
       - vanAlbada and superbee, random field: both midpoint states of every
         edge lie between f_i and f_j, and superbee's increments are never
         smaller than van Albada's (it is the upper edge of the TVD region),
-        and larger on a good part of the edges;
+        and larger on a good part of the edges; monotonizedCentral's lie
+        between the two (and its states between f_i and f_j);
       - vanAlbada on a field with a smooth maximum (a paraboloid): only
         edges near the maximum are limited, by less than the
         Barth-Jespersen limiter.
@@ -149,7 +151,11 @@ int main(int argc, char *argv[])
     };
 
     // Linear field: exact midpoint states with both limiters
-    for (const word type : {"barthJespersen", "vanAlbada", "superbee"})
+    for
+    (
+        const word type
+      : {"barthJespersen", "vanAlbada", "monotonizedCentral", "superbee"}
+    )
     {
         autoPtr<limiter> lim(limiter::New(type, dictionary()));
         fluxState a;
@@ -258,6 +264,7 @@ int main(int argc, char *argv[])
     // end values; superbee's increments at least van Albada's
     autoPtr<limiter> va(limiter::New("vanAlbada", dictionary()));
     autoPtr<limiter> sb(limiter::New("superbee", dictionary()));
+    autoPtr<limiter> mc(limiter::New("monotonizedCentral", dictionary()));
     {
         randomField(11);
         greenGaussGradient(dual, q, G);
@@ -266,7 +273,8 @@ int main(int argc, char *argv[])
 
         scalar outsideVA = 0, outsideSB = 0, belowVA = 0;
         scalar firstOrder = 0, steeper = 0, total = 0;
-        fluxState qL, qR, qLs, qRs;
+        scalar outsideMC = 0, mcOutsideVASB = 0;
+        fluxState qL, qR, qLs, qRs, qLm, qRm;
         forAll(es, e)
         {
             const label i = es[e], j = ee[e];
@@ -278,6 +286,10 @@ int main(int argc, char *argv[])
             sb->midpointStates
             (
                 q[i], q[j], G[i], G[j], halfdX, qLs, qRs
+            );
+            mc->midpointStates
+            (
+                q[i], q[j], G[i], G[j], halfdX, qLm, qRm
             );
             for (direction c = 0; c < nFluxComponents; ++c)
             {
@@ -291,6 +303,11 @@ int main(int argc, char *argv[])
                 const scalar dVA = mag(qL[c] - q[i][c]);
                 const scalar dSB = mag(qLs[c] - q[i][c]);
                 belowVA = max(belowVA, dVA - dSB);
+                outsideMC = max(outsideMC, max(qLm[c] - hi, lo - qLm[c]));
+                outsideMC = max(outsideMC, max(qRm[c] - hi, lo - qRm[c]));
+                const scalar dMC = mag(qLm[c] - q[i][c]);
+                mcOutsideVASB =
+                    max(mcOutsideVASB, max(dVA - dMC, dMC - dSB));
                 steeper += (dSB > dVA*(1 + 1e-12));
                 firstOrder += (qL[c] == q[i][c]) + (qR[c] == q[j][c]);
                 total += 2;
@@ -307,6 +324,12 @@ int main(int argc, char *argv[])
             << "midpoint state outside [f_i, f_j] " << outsideSB
             << ", largest increment below van Albada's " << belowVA << ", "
             << 200*steeper/total << " % of edge increments larger" << endl;
+        nFailed += !ok;
+        ok = outsideMC < 1e-12 && mcOutsideVASB < 1e-12;
+        Info<< (ok ? "PASS" : "FAIL") << " monotonizedCentral, random field:"
+            << " largest midpoint state outside [f_i, f_j] " << outsideMC
+            << ", largest increment outside [van Albada's, superbee's] "
+            << mcOutsideVASB << endl;
         nFailed += !ok;
     }
 

@@ -194,6 +194,12 @@ int main(int argc, char *argv[])
                 << " of " << stats.totalSteps() << " steps since t = 0"
                 << " (smallest factor " << b.minRelaxation() << ")" << nl;
         }
+        if (b.nDissipatingRetries())
+        {
+            Info<< "Body " << b.name() << ": the step's energy balance took "
+                << b.nDissipatingRetries() << " step tries again with"
+                << " dissipating stages since t = 0" << nl;
+        }
     }
     stats.report(Info);
     Info<< endl;

@@ -17,7 +17,8 @@ Foam::energyStability::energyStability(const dualMesh& dual, const bool JLaw)
     JLaw_(JLaw),
     boundaryPoints_(),
     asideMomentum_(),
-    asideF_()
+    asideF_(),
+    requiredDissipation_(0)
 {
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();

@@ -247,6 +247,8 @@ void Foam::solidBody::readBookkeeping()
             readUniformEntry<scalar>(*state, "minEnergyBlending");
         nRelaxedSteps_ = state->getOrDefault<label>("relaxedSteps", 0);
         minRelaxation_ = state->getOrDefault<scalar>("minRelaxation", 1);
+        nDissipatingRetries_ =
+            state->getOrDefault<label>("dissipatingRetries", 0);
     }
     else
     {
@@ -301,6 +303,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     stepEnergy0_(0),
     nRelaxedSteps_(0),
     minRelaxation_(1),
+    nDissipatingRetries_(0),
     kineticEnergy_(0),
     strainEnergy_(0),
     kineticEnergyKnown_(false),
@@ -1316,6 +1319,7 @@ void Foam::solidBody::write()
     state.add("minEnergyBlending", minEnergyTheta_);
     state.add("relaxedSteps", nRelaxedSteps_);
     state.add("minRelaxation", minRelaxation_);
+    state.add("dissipatingRetries", nDissipatingRetries_);
     writeUniformState("bodyState", mesh_, state);
 }
 

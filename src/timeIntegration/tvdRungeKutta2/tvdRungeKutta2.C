@@ -67,8 +67,15 @@ void residuals
 // The factor gamma <= 1 of the step's increment that keeps the numerical
 // dissipation of every checking body from falling (doc/method.md, section
 // 5): f(gamma) = E(U^n + gamma dU) - E^n - gamma dWext is convex with
-// f(0) = 0 and nearly a parabola; its positive root, from f(1) and f(1/2)
-Foam::scalar stepRelaxation(const Foam::PtrList<Foam::solidBody>& bodies)
+// f(0) = 0 and nearly a parabola; its positive root, from f(1) and f(1/2).
+// excess[b]: the energy a body's step would still create that is mostly
+// the combination's (alpha <= beta) but has no usable root, because the
+// stages' fluxes dissipate next to nothing (alpha ~ 0; 0: none)
+Foam::scalar stepRelaxation
+(
+    const Foam::PtrList<Foam::solidBody>& bodies,
+    Foam::scalarList& excess
+)
 {
     using namespace Foam;
 
@@ -80,8 +87,11 @@ Foam::scalar stepRelaxation(const Foam::PtrList<Foam::solidBody>& bodies)
     const scalar tol = 1e-13*scale + VSMALL;
 
     scalar gamma = 1;
-    for (const solidBody& b : bodies)
+    excess.setSize(bodies.size());
+    excess = 0;
+    forAll(bodies, bi)
     {
+        const solidBody& b = bodies[bi];
         if (!b.checksStepEnergy())
         {
             continue;
@@ -113,6 +123,10 @@ Foam::scalar stepRelaxation(const Foam::PtrList<Foam::solidBody>& bodies)
             const scalar root = -alpha/max(beta, VSMALL)*(1 - 1e-6);
             if (!(alpha < 0 && beta > 0 && root >= 0.25 && root < 1))
             {
+                if (iter == 0 && beta > 0 && alpha <= beta)
+                {
+                    excess[bi] = f1;
+                }
                 break;
             }
             const scalar fr = b.stepEnergyExcess(root);
@@ -167,31 +181,61 @@ Foam::label Foam::tvdRungeKutta2::step
         return label(-1);
     };
 
-    residuals(bodies, contacts, t);
-    label failed = updateAll([dt](solidBody& b){ b.rkStage(dt, 0); });
-    if (failed >= 0)
-    {
-        return failed;
-    }
-    residuals(bodies, contacts, t + dt);
-    failed = updateAll([dt](solidBody& b){ b.rkStage(dt, 0.5); });
-    if (failed >= 0)
-    {
-        return failed;
-    }
-
     // The step's energy balance: the two-stage combination adds
     // dt^2/8 |R1 - R2|^2 to the energy, which no stage's residual sees;
     // where it would make the numerical dissipation fall, shorten the
     // increment of every body alike (contact impulses stay equal and
-    // opposite)
-    const scalar gamma = stepRelaxation(bodies);
-    if (gamma < 1)
+    // opposite).  Where both stages' fluxes dissipate next to nothing
+    // (blended to zero production, as superbee's often are) a shorter step
+    // does not help, since the excess then falls only as gamma^2 with
+    // nothing to outweigh it: the step is taken again with stages that
+    // dissipate the excess (one and a half times it, up to three tries)
+    scalarList excess;
+    scalarList required(bodies.size(), 0.0);
+    for (label attempt = 0; ; ++attempt)
     {
-        fraction = gamma;
-        return updateAll([gamma](solidBody& b){ b.relaxStep(gamma); });
+        residuals(bodies, contacts, t);
+        label failed = updateAll([dt](solidBody& b){ b.rkStage(dt, 0); });
+        if (failed >= 0)
+        {
+            return failed;
+        }
+        residuals(bodies, contacts, t + dt);
+        failed = updateAll([dt](solidBody& b){ b.rkStage(dt, 0.5); });
+        if (failed >= 0)
+        {
+            return failed;
+        }
+
+        const scalar gamma = stepRelaxation(bodies, excess);
+        const bool retry = (attempt < 3 && max(excess) > 0);
+        if (!retry)
+        {
+            forAll(bodies, b)
+            {
+                if (required[b] > 0)
+                {
+                    bodies[b].requireDissipation(0);
+                }
+            }
+            if (gamma < 1)
+            {
+                fraction = gamma;
+                return updateAll([gamma](solidBody& b){ b.relaxStep(gamma); });
+            }
+            return -1;
+        }
+        forAll(bodies, b)
+        {
+            required[b] += 1.5*excess[b]/dt;
+            bodies[b].requireDissipation(required[b]);
+            bodies[b].restoreState();
+        }
+        for (contactPair& c : contacts)
+        {
+            c.startStep(dt);
+        }
     }
-    return -1;
 }
 
 

@@ -378,29 +378,24 @@ void Foam::bodyScheme::chooseFromScene
         const bool weak = (impactMach < shockMachThreshold);
         limiter_ = curved && weak ? word("superbee") : shockLimiter_;
         OStringStream why;
-        if (!curved)
+        why << "auto: ";
+        if (curved)
         {
-            why << "auto: "
-                << (planarMach > 0 ? "a planar impact" : "no impact")
-                << (
-                       shockLimiter_ == "vanAlbada"
-                     ? "; nu >= 0.45: limited per edge"
-                     : "; per point, no new extrema"
-                   );
+            why << "curved impact at Mach number " << impactMach
+                << (weak ? " < " : " >= ") << shockMachThreshold;
         }
         else
         {
-            why << "auto: curved impact at Mach number " << impactMach
-                << (weak ? " < " : " >= ") << shockMachThreshold
-                << (
-                       weak
-                     ? ": fronts kept within two cells, where their capture"
-                       " dissipates"
-                     : shockLimiter_ == "vanAlbada"
-                     ? ": shocks; nu >= 0.45, limited per edge"
-                     : ": shocks; per point, no new extrema"
-                   );
+            why << (planarMach > 0 ? "a planar impact" : "no impact");
         }
+        why <<
+        (
+            curved && weak
+          ? ": fronts kept within two cells, where their capture dissipates"
+          : shockLimiter_ == "vanAlbada"
+          ? "; nu >= 0.45: limited per edge"
+          : "; per point, no new extrema"
+        );
         setChoice("limiter", limiter_ + "  (" + why.str() + ")");
     }
 

@@ -23,13 +23,20 @@ from svmbPost.casePost import written_times
 
 
 def centreline(body, time):
+    """Pressure along the bar's axis (y = z = 0): the points on it, or, on
+    a mesh with an odd number of cells across, the mean over the ring of
+    points nearest to it at each x"""
     X = svmbPost.read_points('constant/%s/polyMesh/points' % body)
     s = svmbPost.read_point_field('%s/%s/sigma' % (time, body))
     tol = 1e-6 * np.ptp(X[:, 0])
-    on = (np.abs(X[:, 1]) < tol) & (np.abs(X[:, 2]) < tol)
-    order = np.argsort(X[on, 0])
+    r = np.hypot(X[:, 1], X[:, 2])
+    on = r < r.min() + tol
     p = -(s[on, 0] + s[on, 3] + s[on, 5]) / 3
-    return X[on, 0][order], p[order]
+    x = X[on, 0]
+    key = np.round(x / tol)
+    keys = np.unique(key)
+    return (np.array([x[key == k].mean() for k in keys]),
+            np.array([p[key == k].mean() for k in keys]))
 
 
 def main():

@@ -11,7 +11,10 @@
 //   frontBack  z = 0 and z = t (symmetry: plane strain)
 DefineConstant[ x0 = 0, L = 32.4e-3, W = 6.4e-3, nx = 80, ny = 16,
                 contactEnd = 1 ];
-t = W/ny;
+// t: the plane-strain layer's thickness, by default one cell across; two
+// bodies in contact need the same t (-setnumber t), else the thinner one
+// takes the thicker one's force over less depth
+DefineConstant[ t = W/ny ];
 e = 1e-6*L;
 // Corners listed from the end to the contact face: mirrored for Bar Two
 sx = (contactEnd == 1) ? 1 : -1;

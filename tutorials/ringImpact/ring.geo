@@ -13,7 +13,10 @@
 //   frontBack  z = 0 and z = t (symmetry: plane strain)
 DefineConstant[ cx = 0, Ro = 40e-3, Ri = 30e-3, nr = 10, nq = 31,
                 side = 1 ];
-t = (Ro - Ri)/nr;
+// t: the plane-strain layer's thickness, by default one cell across; two
+// bodies in contact need the same t (-setnumber t), else the thinner one
+// takes the thicker one's force over less depth
+DefineConstant[ t = (Ro - Ri)/nr ];
 Point(1) = {cx, 0, 0};
 For k In {0 : 3}
     a = Pi/4 + k*Pi/2;

@@ -14,6 +14,8 @@ Foam::planeStrainTie::planeStrainTie
     const dictionary& bodyDict,
     const word& bodyName
 )
+:
+    depth_(0)
 {
     const polyMesh& mesh = dual.mesh();
     wordList patchNames;
@@ -91,6 +93,11 @@ Foam::planeStrainTie::planeStrainTie
             B_.append(partner[i]);
         }
     }
+    forAll(A_, k)
+    {
+        depth_ = max(depth_, mag(X[B_[k]] - X[A_[k]]));
+    }
+    reduce(depth_, maxOp<scalar>());
 }
 
 

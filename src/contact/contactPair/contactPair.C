@@ -787,7 +787,7 @@ void Foam::contactPair::mapByAMI
     }
 
     buildExchange();
-    forceAreaA_ = exchanged(A_, List<scalar>(tractionAreasA()));
+    forceAreaA_ = exchanged(A_, List<scalar>(tractionAreaA_));
 
     // (slides are measured from these positions)
     mappedA_ = uniqueA;
@@ -1290,19 +1290,10 @@ void Foam::contactPair::addSideFluxes
 
 Foam::List<Foam::vector> Foam::contactPair::tractionForcesA() const
 {
-    const dualMesh::patchSubFaces& sf =
-        A_.body->dual().subFaces(A_.patchi);
-    List<vector> force(A_.points.size(), Zero);
-    forAll(sf.point, s)
+    List<vector> force(A_.points.size());
+    forAll(force, i)
     {
-        const scalar w = sf.nbrWeight[s];
-        const scalar magA = mag(sf.area[s]);
-        const label i = A_.sfLocal[s];
-        const label ip = A_.sfPrev[s];
-        const label in = A_.sfNext[s];
-        force[i] += ((1 - 2*w)*magA)*A_.tC[i];
-        force[ip] += (w*magA)*A_.tC[ip];
-        force[in] += (w*magA)*A_.tC[in];
+        force[i] = tractionAreaA_[i]*A_.tC[i];
     }
     return force;
 }
@@ -1459,6 +1450,7 @@ Foam::contactPair::contactPair
     chooseRiemannSolver(bodyA, bodyB);
     setSide(A_, bodyA, dict.get<word>("patchA"));
     setSide(B_, bodyB, dict.get<word>("patchB"));
+    tractionAreaA_ = tractionAreasA();
 
     checkFacing();
 

@@ -596,7 +596,8 @@ struct solverTraction
     }
 };
 
-// The acoustic stick traction with constant impedances, inlined
+// The acoustic stick traction with constant impedances (times the face's
+// compression factor), inlined
 struct stickTraction
 {
     const Foam::scalar Zp, Zs;
@@ -605,10 +606,15 @@ struct stickTraction
     (
         const Foam::vector& tL, const Foam::vector& tR,
         const Foam::vector& vL, const Foam::vector& vR,
-        const Foam::vector& n, const Foam::scalar
+        const Foam::vector& n, const Foam::scalar Lambda
     ) const
     {
-        return Foam::acousticFormulas::stickTraction(tL, tR, vL, vR, n, Zp, Zs);
+        const Foam::scalar s =
+            Foam::acousticFormulas::compressedFaceFactor(Lambda);
+        return Foam::acousticFormulas::stickTraction
+        (
+            tL, tR, vL, vR, n, s*Zp, s*Zs
+        );
     }
 };
 
@@ -643,7 +649,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     // traction-jump term, doc/method.md section 4).  Through J' = H : D it
     // damps the jump of the normal traction, and with it the jump of
     // Sigma_J, with the coefficient of the J stabilisation itself
-    // (|H C|^2/(2 Zp |C|)): with it the J stabilisation is already there,
+    // (|H C|^2/(2 Z |C|), Z = Zp max(1, |H N|)): with it the J stabilisation is already there,
     // and adding it again damps a checkerboard of J at twice the rate the
     // stable step allows
     const bool upwindF = scheme_->FStabilisation();
@@ -731,6 +737,12 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             dt *= w;
         }
         const scalar dtn = dt & n;
+        // The face's impedances grow with its compression as in the
+        // traction (acousticFormulas::compressedFaceFactor): the F flux's
+        // upwind velocity and the J stabilisation are the same Riemann
+        // solution's
+        const scalar invS =
+            1/acousticFormulas::compressedFaceFactor(magHN);
         // With a Hugoniot material the normal impedance is the shock one
         // in compression, as in the traction: F and momentum then follow
         // one Riemann solution.  (With the acoustic impedance here the
@@ -741,9 +753,11 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             (
                 ZpBody, shockMass, vL, vR, n, magHN
             )
-          : vStabP;
-        vCA = A*(0.5*(vL + vR) + (vStabN*dtn)*n + vStabS*(dt - dtn*n));
-        dS = JStabilisation ? (1 - w)*Sfactor*A*hN2*(SJR - SJL) : 0;
+          : invS*vStabP;
+        vCA =
+            A
+           *(0.5*(vL + vR) + (vStabN*dtn)*n + (invS*vStabS)*(dt - dtn*n));
+        dS = JStabilisation ? (1 - w)*Sfactor*A*invS*hN2*(SJR - SJL) : 0;
     };
 
     // Add one edge's fluxes to the residuals

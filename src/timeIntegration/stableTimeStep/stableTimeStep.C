@@ -8,6 +8,7 @@
 #include "materialModel.H"
 #include "solidBoundaryCondition.H"
 #include "DynamicList.H"
+#include "acousticFormulas.H"
 
 #include <Eigen/Eigenvalues>
 
@@ -62,21 +63,20 @@ Foam::stableTimeStep::stableTimeStep
 :
     dual_(dual),
     material_(material),
+    largeStrain_(!material.smallStrain()),
     sJ_(),
+    stretch2_(),
     rMomentum_(),
-    M_(),
     dtRefMin_(GREAT)
 {
     const label nPts = dual.nPoints();
 
-    // S_i (all faces), T_i (their normal parts that carry a mode), the
+    // S_i (all faces), T_i (their normal parts that carry a mode) and the
     // faces that drain J (the interior ones and, weighted, the boundary
-    // faces whose velocity follows the traction) for the J rate, and the
-    // normal parts of all faces for M_i = Tall_i/S_i
+    // faces whose velocity follows the traction) for the J rate
     scalarField S(nPts, 0.0);
     scalarField Sint(nPts, 0.0);
     symmTensorField T(nPts, Zero);
-    symmTensorField Tall(nPts, Zero);
 
     const labelList& start = dual.edgeStart();
     const labelList& end = dual.edgeEnd();
@@ -93,7 +93,6 @@ Foam::stableTimeStep::stableTimeStep
     }
 
     S = Sint;
-    Tall = T;
 
     boolList normalConstrained(dual.mesh().boundaryMesh().size(), false);
     for (const solidBoundaryCondition& bc : bcs)
@@ -103,6 +102,7 @@ Foam::stableTimeStep::stableTimeStep
     DynamicList<label> bPoint;
     DynamicList<scalar> bMagA;
     DynamicList<vector> bNormal;
+    DynamicList<bool> bDrainsJ;
     forAll(normalConstrained, patchi)
     {
         const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
@@ -116,14 +116,14 @@ Foam::stableTimeStep::stableTimeStep
             }
             const symmTensor nn(sqr(sf.area[s])/magA);
             S[i] += magA;
-            Tall[i] += nn;
+            bPoint.append(i);
+            bMagA.append(magA);
+            bNormal.append(sf.area[s]/magA);
+            bDrainsJ.append(!normalConstrained[patchi]);
             if (!normalConstrained[patchi])
             {
                 T[i] += nn;
                 Sint[i] += boundaryJWeight*magA;
-                bPoint.append(i);
-                bMagA.append(magA);
-                bNormal.append(sf.area[s]/magA);
             }
         }
     }
@@ -136,10 +136,6 @@ Foam::stableTimeStep::stableTimeStep
         syncTools::syncPointList
         (
             mesh, T, plusEqOp<symmTensor>(), symmTensor(Zero)
-        );
-        syncTools::syncPointList
-        (
-            mesh, Tall, plusEqOp<symmTensor>(), symmTensor(Zero)
         );
     }
 
@@ -164,13 +160,22 @@ Foam::stableTimeStep::stableTimeStep
     // along without acting back, and sets no limit.  deltaT() evaluates the
     // rate from the state's coefficients (sJ_); here only the undeformed
     // step of a material whose step never changes is kept
-    const bool JRate = JLaw && !material.smallStrain();
+    const bool JRate = JLaw && largeStrain_;
     if (JRate)
     {
         sJ_.setSize(nPts);
+    }
+    if (largeStrain_)
+    {
+        stretch2_.setSize(nPts);
         bPoint_.transfer(bPoint);
         bMagA_.transfer(bMagA);
         bNormal_.transfer(bNormal);
+        bDrainsJ_.setSize(bDrainsJ.size());
+        forAll(bDrainsJ, b)
+        {
+            bDrainsJ_.set(b, bDrainsJ[b]);
+        }
     }
     const scalar k = material.kappa() + material.tieModulus();
     forAll(rMomentum_, i)
@@ -179,19 +184,6 @@ Foam::stableTimeStep::stableTimeStep
             JRate ? k*Sint[i]/(material.rho()*cp*V[i]) : 0;
         dtRefMin_ =
             min(dtRefMin_, 2/max(max(rMomentum_[i], rJ), VSMALL));
-    }
-
-    if (!material.smallStrain())
-    {
-        M_.setSize(nPts);
-        forAll(M_, i)
-        {
-            const symmTensor m(Tall[i]/max(S[i], VSMALL));
-            M_[i] = SymmTensor<floatScalar>
-            (
-                m.xx(), m.xy(), m.xz(), m.yy(), m.yz(), m.zz()
-            );
-        }
     }
 }
 
@@ -207,7 +199,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
 ) const
 {
     const bool hugoniot = material_.hugoniot();
-    if (M_.empty() && !hugoniot)
+    if (!largeStrain_ && !hugoniot)
     {
         // Small strain without a Hugoniot pressure: constant stiffness
         return dtRefMin_;
@@ -221,34 +213,65 @@ Foam::scalar Foam::stableTimeStep::deltaT
     const scalar rhoCp2 = material_.rho()*sqr(cp);
     const scalarField& V = dual_.volumes();
 
-    // The J stabilisation's own coefficients, S_ij = |C| |H_ave n|^2/(2 Z)
-    // with H averaged over the edge's two points as in the flux
-    if (!sJ_.empty())
+    // The faces' state: the largest area ratio |H_i n|^2 over each point's
+    // faces (the stretch of its fastest direction), and the J
+    // stabilisation's own coefficients, S_ij = |C| |H_ave n|^2/(2 Z) with
+    // H averaged over the edge's two points and the face's impedance Z =
+    // Z_p max(1, |H_ave n|), as in the flux
+    if (largeStrain_)
     {
         const labelList& start = dual_.edgeStart();
         const labelList& end = dual_.edgeEnd();
         const vectorField& n = dual_.edgeNormals();
         const scalarField& magSf = dual_.edgeMagSf();
-        sJ_ = 0;
+        const bool JRate = !sJ_.empty();
+        stretch2_ = 0;
+        if (JRate)
+        {
+            sJ_ = 0;
+        }
         forAll(start, e)
         {
             const label i = start[e], j = end[e];
-            const vector hN(0.5*((H[i] & n[e]) + (H[j] & n[e])));
-            const scalar w = magSf[e]*magSqr(hN);
-            sJ_[i] += w;
-            sJ_[j] += w;
+            // The face's own area ratio (H averaged over the edge, as in
+            // the flux's impedance) counts at both ends: next to a crushed
+            // point a mildly deformed one is damped through it
+            const vector hNi(H[i] & n[e]), hNj(H[j] & n[e]);
+            const scalar hN2 = magSqr(0.5*(hNi + hNj));
+            stretch2_[i] = max(stretch2_[i], max(magSqr(hNi), hN2));
+            stretch2_[j] = max(stretch2_[j], max(magSqr(hNj), hN2));
+            if (JRate)
+            {
+                const scalar w =
+                    magSf[e]*hN2
+                   /acousticFormulas::compressedFaceFactor(std::sqrt(hN2));
+                sJ_[i] += w;
+                sJ_[j] += w;
+            }
         }
         forAll(bPoint_, b)
         {
             const label i = bPoint_[b];
-            sJ_[i] += boundaryJWeight*bMagA_[b]*magSqr(H[i] & bNormal_[b]);
+            const scalar hN2 = magSqr(H[i] & bNormal_[b]);
+            stretch2_[i] = max(stretch2_[i], hN2);
+            if (JRate && bDrainsJ_.test(b))
+            {
+                sJ_[i] += boundaryJWeight*bMagA_[b]*hN2;
+            }
         }
         if (Pstream::parRun())
         {
             syncTools::syncPointList
             (
-                dual_.mesh(), sJ_, plusEqOp<scalar>(), 0.0
+                dual_.mesh(), stretch2_, maxEqOp<scalar>(), 0.0
             );
+            if (JRate)
+            {
+                syncTools::syncPointList
+                (
+                    dual_.mesh(), sJ_, plusEqOp<scalar>(), 0.0
+                );
+            }
         }
     }
     const scalar JFactor = 1/(material_.rho()*cp);
@@ -263,34 +286,22 @@ Foam::scalar Foam::stableTimeStep::deltaT
             c = max(c, material_.tangentWaveSpeed(J[i])/cp);
         }
 
-        // Face-area mean of |F^-T n|^2 = M : (F^-1 F^-T), with F^-T =
-        // H/det F: sum over the rows h_k of H of h_k . M . h_k/det(F)^2.
-        // A volume grown beyond its reference one (det F > 1) does not
-        // slow the volumetric wave down: its Lagrangian stiffness along
-        // N is dSigma_J/dJ |H N|^2 whatever det F is (with the J law det
-        // F is held to J only by the weak tie), so det F counts only
-        // below one
+        // The stretch of the point's fastest direction: the largest
+        // |F^-T n|^2 = |H n|^2/det(F)^2 over its faces.  A volume grown
+        // beyond its reference one (det F > 1) does not slow the
+        // volumetric wave down: its Lagrangian stiffness along N is
+        // dSigma_J/dJ |H N|^2 whatever det F is (with the J law det F is
+        // held to J only by the weak tie), so det F counts only below one
         scalar stretch2 = 1;
-        if (!M_.empty())
+        if (largeStrain_)
         {
-            const tensor& h = H[i];
-            const SymmTensor<floatScalar>& mf = M_[i];
-            const symmTensor m
-            (
-                mf.xx(), mf.xy(), mf.xz(), mf.yy(), mf.yz(), mf.zz()
-            );
-            const scalar detF2 = sqr((h && F[i])/3);
-            scalar s2 = 0;
-            for (direction k = 0; k < 3; ++k)
-            {
-                const vector hk(h(k, 0), h(k, 1), h(k, 2));
-                s2 += hk & (m & hk);
-            }
-            stretch2 = max(s2/max(min(detF2, 1.0), VSMALL), 1.0);
+            const scalar detF2 = sqr((H[i] && F[i])/3);
+            stretch2 =
+                max(stretch2_[i]/max(min(detF2, 1.0), VSMALL), 1.0);
         }
 
-        // Momentum: the wave speed times the stretch of the faces; J
-        // stabilisation: k sum_j 2 S_ij/V with the state's tangent k
+        // Momentum: the wave speed times the stretch; J stabilisation:
+        // k sum_j 2 S_ij/V with the state's tangent k
         scalar r = rMomentum_[i]*c*sqrt(stretch2);
         if (!sJ_.empty())
         {

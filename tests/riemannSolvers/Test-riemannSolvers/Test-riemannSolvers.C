@@ -9,7 +9,8 @@ Description
     Riemann and boundary formulas against hand-computed cases
     (doc/method.md, section 3):
       - acoustic contact stick between different impedances (normal and
-        tangential), its symmetric (homogeneous) limit;
+        tangential), its symmetric (homogeneous) limit, and the interior
+        faces' impedances scaled by their compression max(1, |H N|);
       - the pressure-dominated contact stick: only the Sigma_J jump moves
         the velocity, the traction is acoustic; with volumetric tractions
         (t_n = Sigma_J Lambda) it is the acoustic state;
@@ -76,6 +77,21 @@ int main(int argc, char *argv[])
         // 1/2 (tL + tR) + Zp/2 dv_n n + Zs/2 dv_t
         check("t_x", tC.x(), -2 + 1*(-2));
         check("t_y", tC.y(), 1 + 0.5*2);
+
+        // A face compressed to the area ratio Lambda = |H N| = 2.5 has the
+        // Lagrangian impedances 2.5 Zp, 2.5 Zs; an expanded one (0.7) keeps
+        // the reference ones
+        check("compression factor, Lambda 2.5",
+            acousticFormulas::compressedFaceFactor(2.5), 2.5);
+        check("compression factor, Lambda 0.7",
+            acousticFormulas::compressedFaceFactor(0.7), 1);
+        const scalar s = acousticFormulas::compressedFaceFactor(2.5);
+        const vector tCc
+        (
+            acousticFormulas::stickTraction(tL, tR, vL, vR, n, s*2, s*1)
+        );
+        check("compressed face t_x", tCc.x(), -2 + 2.5*(-2));
+        check("compressed face t_y", tCc.y(), 1 + 2.5*0.5*2);
     }
 
     Info<< "Pressure-dominated contact stick, Z_L = 2, Z_R = 3" << endl;

@@ -609,11 +609,9 @@ struct stickTraction
         const Foam::vector& n, const Foam::scalar Lambda
     ) const
     {
-        const Foam::scalar s =
-            Foam::acousticFormulas::compressedFaceFactor(Lambda);
-        return Foam::acousticFormulas::stickTraction
+        return Foam::acousticFormulas::interiorStickTraction
         (
-            tL, tR, vL, vR, n, s*Zp, s*Zs
+            tL, tR, vL, vR, n, Lambda, Zp, Zs
         );
     }
 };
@@ -741,8 +739,8 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         // traction (acousticFormulas::compressedFaceFactor): the F flux's
         // upwind velocity and the J stabilisation are the same Riemann
         // solution's
-        const scalar invS =
-            1/acousticFormulas::compressedFaceFactor(magHN);
+        // (1/max(1, |H N|) from the inverse already taken: no division)
+        const scalar invS = min(1.0, invMagHN);
         // With a Hugoniot material the normal impedance is the shock one
         // in compression, as in the traction: F and momentum then follow
         // one Riemann solution.  (With the acoustic impedance here the

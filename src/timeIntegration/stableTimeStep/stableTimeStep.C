@@ -171,11 +171,7 @@ Foam::stableTimeStep::stableTimeStep
         bPoint_.transfer(bPoint);
         bMagA_.transfer(bMagA);
         bNormal_.transfer(bNormal);
-        bDrainsJ_.setSize(bDrainsJ.size());
-        forAll(bDrainsJ, b)
-        {
-            bDrainsJ_.set(b, bDrainsJ[b]);
-        }
+        bDrainsJ_.assign(bDrainsJ);
     }
     const scalar k = material.kappa() + material.tieModulus();
     forAll(rMomentum_, i)

@@ -372,6 +372,40 @@ int main(int argc, char *argv[])
         check(dD[0] > 0, "plastic dissipation increment > 0", dD[0], 0);
     }
 
+    // von Mises plasticity's logarithm of be: summed as a series within
+    // a radius of the identity, by the eigen-solve beyond it.  An
+    // isochoric stretch diag(l, l^-1/2, l^-1/2) in the elastic range (a
+    // yield stress beyond reach) has tau' = 2 mu ln(l) diag(1, -1/2, -1/2)
+    // exactly, so P_xx = 2 mu ln(l)/l and P_yy = -mu ln(l) l^1/2, on both
+    // sides of the series' radii (|X| = 0.03 and 0.12 near ln l = 0.015
+    // and 0.06) and beyond them
+    {
+        const char* text =
+            "type vonMisesPlasticity; rho 8930; E 117e9; nu 0.35;"
+            " yieldStress 1e15; hardening 0;";
+        Info<< nl << text << endl;
+        const dictionary dict((IStringStream(text))());
+        autoPtr<materialModel> model(materialModel::New(dict, 1));
+        const materialModel& m = model();
+        const scalar mu = m.mu();
+        scalar err = 0;
+        for (const scalar lnl : {1e-4, 3e-3, 0.0149, 0.0151, 0.03, 0.0599, 0.0601, 0.1, 0.3})
+        {
+            const scalar l = Foam::exp(lnl), lt = 1/Foam::sqrt(l);
+            const tensor P(stressOf(m, tensor(l, 0, 0, 0, lt, 0, 0, 0, lt)));
+            const scalar Pxx = 2*mu*lnl/l, Pyy = -mu*lnl/lt;
+            err = max(err, mag(P.xx() - Pxx)/mag(Pxx));
+            err = max(err, mag(P.yy() - Pyy)/mag(Pxx));
+            err = max(err, mag(P.xy())/mag(Pxx));
+        }
+        check
+        (
+            err < 1e-12,
+            "isochoric stretch: tau' = 2 mu dev(ln V) (series and eigen-solve)",
+            err, 1e-12
+        );
+    }
+
     // Bad input is rejected with FatalIOError: checked by the test script
 
     Info<< nl << (nFailed ? "FAILED " : "All checks passed ")

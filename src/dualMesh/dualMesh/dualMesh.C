@@ -407,7 +407,8 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     pointEdges_(),
     boundaryPoints_(),
     boundaryNormals_(),
-    boundaryIndex_()
+    boundaryIndex_(),
+    linearExact_(calcLinearExact())
 {
     const edgeList& edges = mesh.edges();
     const pointField& X = mesh.points();
@@ -619,6 +620,51 @@ Foam::dualMesh::patchPointNormals(const label patchi) const
         n /= max(mag(n), VSMALL);
     }
     return tN;
+}
+
+
+bool Foam::dualMesh::calcLinearExact() const
+{
+    const cellList& cells = mesh_.cells();
+    const faceList& faces = mesh_.faces();
+    const pointField& X = mesh_.points();
+    bool exact = true;
+    forAll(cells, celli)
+    {
+        const cell& c = cells[celli];
+        if (c.size() == 4)
+        {
+            // (four faces: a tetrahedron)
+            continue;
+        }
+        if (c.size() != 6)
+        {
+            exact = false;
+            break;
+        }
+        // A hexahedron whose six faces are parallelograms (a - b + c - d =
+        // 0 to round-off) is a parallelepiped
+        for (const label facei : c)
+        {
+            const face& f = faces[facei];
+            if
+            (
+                f.size() != 4
+             || mag(X[f[0]] - X[f[1]] + X[f[2]] - X[f[3]])
+              > 1e-8*(mag(X[f[2]] - X[f[0]]) + mag(X[f[3]] - X[f[1]]))
+            )
+            {
+                exact = false;
+                break;
+            }
+        }
+        if (!exact)
+        {
+            break;
+        }
+    }
+    reduce(exact, andOp<bool>());
+    return exact;
 }
 
 

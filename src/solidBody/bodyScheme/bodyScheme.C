@@ -102,7 +102,7 @@ Foam::bodyScheme::bodyScheme
 (
     const dictionary& solidProperties,
     const materialModel& m,
-    const bool tetrahedral
+    const bool linearExact
 )
 :
     dict_(solidProperties, dictionary(fileName("scheme"))),
@@ -281,28 +281,33 @@ Foam::bodyScheme::bodyScheme
         automatic("limiter") && secondOrder_
      && !plastic && !noShear && !FStabilisation_;
     shockLimiter_ = stiffVolume ? "vanAlbada" : "barthJespersen";
-    // Plastic bodies on tetrahedra: no limiter.  Van Albada's clipping of
+    // Plastic bodies whose gradients are exact for linear fields
+    // (tetrahedra, parallelepipeds): no limiter.  Van Albada's clipping of
     // the smooth plastic flow damps it there: the Taylor bar on
     // unstructured tets (4,828 points) reached 6.66 mm with it and 6.98 mm
-    // without (band 7.0-7.15, superbee 7.18); the plastic wave of a bar
-    // on a wall (structured tets, 40 and 200 m/s) holds the exact shocked
-    // state to 0.13-0.15 % without a limiter and 2.3-2.6 % with van
-    // Albada; the plastic torus and car lose 9.0 and 7.8 % of E0 instead of
-    // 10.8 and 10.6 %, with fewer pressure extrema (doc/results.md,
-    // "Plastic bodies on tetrahedra").  On the hexahedral O-grid of the
-    // Taylor bar van Albada keeps the foot round (edge 6.95-6.99 mm at
+    // without (band 7.0-7.15, superbee 7.18); a copper bar's plastic wave
+    // on a wall holds the exact shocked state to 0.13-0.15 % without a
+    // limiter and 2.3-2.6 % with van Albada on structured tets (40 and 200
+    // m/s; without hardening 0.13 against 1.5 %), 0.03 against 1.85 % on
+    // hexahedra; the plastic torus and car lose 9.0 and 7.8 % of E0
+    // instead of 10.8 and 10.6 %, with fewer pressure extrema
+    // (doc/results.md, "Plastic bodies on tetrahedra and
+    // parallelepipeds").  Where the gradient is not exact, as on the
+    // Taylor bar's hexahedral O-grid, van Albada also holds back the
+    // gradient's own error and keeps the foot round (edge 6.95-6.99 mm at
     // N = 3; 6.76-7.10 without a limiter)
-    const bool plasticOnTets = plastic && tetrahedral;
+    const bool plasticExactGradient = plastic && linearExact;
     limiter_ = choose
     (
         "limiter", wordList(),
-        plasticOnTets ? "none"
+        plasticExactGradient ? "none"
       : plastic || noShear || FStabilisation_ ? "vanAlbada" : "superbee",
         limiterFromScene_
       ? string("for now: chosen from the scene's impact speeds")
-      : plasticOnTets
-      ? kind + " on tetrahedra: a limiter's clipping of the smooth plastic"
-        " flow damps it"
+      : plasticExactGradient
+      ? kind + " on tetrahedra or parallelepipeds (gradients exact for"
+        " linear fields): a limiter's clipping of the smooth plastic flow"
+        " damps it"
       : plastic
       ? kind + ": Barth-Jespersen's per-point clipping of smooth velocity"
         " extrema locks plastic flow, superbee over-spreads it"

@@ -34,17 +34,7 @@ void Foam::solidBody::readScheme()
 
     // Each switch given in the scheme dictionary or chosen from the
     // material (bodyScheme.H)
-    bool tetrahedral = true;
-    for (const cell& c : mesh_.cells())
-    {
-        if (c.size() != 4)
-        {
-            tetrahedral = false;
-            break;
-        }
-    }
-    reduce(tetrahedral, andOp<bool>());
-    scheme_.reset(new bodyScheme(dict_, material_(), tetrahedral));
+    scheme_.reset(new bodyScheme(dict_, material_(), dual_.linearExact()));
     if (scheme_->energyStable())
     {
         energyStability_.reset(new energyStability(dual_, scheme_->JLaw()));

@@ -12,7 +12,8 @@ Description
       - C_ij = -C_ji through the point-edge connectivity;
       - the Green-Gauss gradient of a linear field (exact on tets and
         parallelepipeds, with the boundary weights of dualMesh::patchSubFaces;
-        -linearExact asserts it; on prisms only interior points are exact).
+        -linearExact asserts it, and that dualMesh::linearExact() is true;
+        on prisms only interior points are exact).
     With -dump, writes per-point volumes and per-edge vectors with global
     (serial) point labels, so a parallel run can be compared with a serial
     one (tests/dualMesh/compareDumps).  Exits non-zero if a check fails.
@@ -254,6 +255,15 @@ int main(int argc, char *argv[])
             Info<< "    info linear gradient error: interior " << errInternal
                 << ", boundary " << errBoundary << endl;
         }
+
+        // The mesh's own answer (every cell a tetrahedron or a
+        // parallelepiped), on which the automatic scheme relies, agrees
+        check
+        (
+            dual.linearExact() == args.found("linearExact"),
+            "dualMesh::linearExact() as the mesh type says",
+            dual.linearExact(), 0.5
+        );
     }
 
     // 5. Dump with serial point labels ---------------------------------------

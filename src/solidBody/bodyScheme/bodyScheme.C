@@ -295,8 +295,10 @@ Foam::bodyScheme::bodyScheme
     // parallelepipeds").  Where the gradient is not exact, as on the
     // Taylor bar's hexahedral O-grid, van Albada also holds back the
     // gradient's own error and keeps the foot round (edge 6.95-6.99 mm at
-    // N = 3; 6.76-7.10 without a limiter)
-    const bool plasticExactGradient = plastic && linearExact;
+    // N = 3; 6.76-7.10 without a limiter).  With the upwind F flux the
+    // Riemann boundary slopes come too, which need a limiter: van Albada
+    const bool plasticExactGradient =
+        plastic && linearExact && !FStabilisation_;
     limiter_ = choose
     (
         "limiter", wordList(),

@@ -625,41 +625,45 @@ Foam::dualMesh::patchPointNormals(const label patchi) const
 
 bool Foam::dualMesh::calcLinearExact() const
 {
-    const cellList& cells = mesh_.cells();
     const faceList& faces = mesh_.faces();
     const pointField& X = mesh_.points();
-    bool exact = true;
-    forAll(cells, celli)
+
+    // A cell of four faces is a tetrahedron; a cell of six four-sided
+    // faces that are all parallelograms (a - b + c - d = 0 to round-off)
+    // is a parallelepiped
+    auto parallelogram = [&](const face& f)
     {
-        const cell& c = cells[celli];
+        return
+            f.size() == 4
+         && mag(X[f[0]] - X[f[1]] + X[f[2]] - X[f[3]])
+         <= 1e-8*(mag(X[f[2]] - X[f[0]]) + mag(X[f[3]] - X[f[1]]));
+    };
+    auto exactCell = [&](const cell& c)
+    {
         if (c.size() == 4)
         {
-            // (four faces: a tetrahedron)
-            continue;
+            return true;
         }
         if (c.size() != 6)
         {
-            exact = false;
-            break;
+            return false;
         }
-        // A hexahedron whose six faces are parallelograms (a - b + c - d =
-        // 0 to round-off) is a parallelepiped
         for (const label facei : c)
         {
-            const face& f = faces[facei];
-            if
-            (
-                f.size() != 4
-             || mag(X[f[0]] - X[f[1]] + X[f[2]] - X[f[3]])
-              > 1e-8*(mag(X[f[2]] - X[f[0]]) + mag(X[f[3]] - X[f[1]]))
-            )
+            if (!parallelogram(faces[facei]))
             {
-                exact = false;
-                break;
+                return false;
             }
         }
-        if (!exact)
+        return true;
+    };
+
+    bool exact = true;
+    for (const cell& c : mesh_.cells())
+    {
+        if (!exactCell(c))
         {
+            exact = false;
             break;
         }
     }

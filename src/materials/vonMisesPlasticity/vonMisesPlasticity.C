@@ -246,7 +246,7 @@ void Foam::materialModels::vonMisesPlasticity::stress
             // det(F)^2/3 F^-1 exp(2 e) F^-T
             returnedCpInv_[i] =
                 cbrt(sqr(detF))*transform(Finv, exponential(2*e));
-            returnedDissipation_[i] = dgamma*sqrt(1.5)*2*mu_*mag(e);
+            returnedDissipation_[i] = plasticDissipation(dgamma, e);
         }
     }
 }
@@ -279,7 +279,7 @@ Foam::scalar Foam::materialModels::vonMisesPlasticity::trialPointEnergy
     symmTensor e;
     scalar dgamma, Jp;
     returnMap(F, J, CpInv_[i], epsP_[i], e, dgamma, Jp);
-    dD = dgamma > 0 ? dgamma*sqrt(1.5)*2*mu_*mag(e) : 0;
+    dD = plasticDissipation(dgamma, e);
     return
         mu_*magSqr(e)
       + volumetricEnergyHencky(J)

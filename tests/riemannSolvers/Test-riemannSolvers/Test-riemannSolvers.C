@@ -91,6 +91,22 @@ int main(int argc, char *argv[])
         );
         check("compressed face t_x", tCc.x(), -2 + 2.5*(-2));
         check("compressed face t_y", tCc.y(), 1 + 2.5*0.5*2);
+
+        // The upwind F flux's share of its traction-jump term, Z = 2: a
+        // wave ([t] = -Z [v]) keeps all of it, and so does a jump slower
+        // than a wave; a shock at twice the wave speed ([t] = 2 Z [v]) gets
+        // half (its own impedance 2 Z); a slow mode with [t] = 40 Z [v]
+        // gets 1/40; no velocity jump, nothing
+        check("slow-mode factor, a wave",
+            acousticFormulas::slowModeFactor(-0.6, 0.3, 2), 1);
+        check("slow-mode factor, a jump slower than a wave",
+            acousticFormulas::slowModeFactor(0.1, 0.3, 2), 1);
+        check("slow-mode factor, a shock at 2 c",
+            acousticFormulas::slowModeFactor(1.2, -0.3, 2), 0.5);
+        check("slow-mode factor, a slow mode",
+            acousticFormulas::slowModeFactor(24, 0.3, 2), 1.0/40.0);
+        check("slow-mode factor, no velocity jump",
+            acousticFormulas::slowModeFactor(1, 0, 2), 0);
     }
 
     Info<< "Pressure-dominated contact stick, Z_L = 2, Z_R = 3" << endl;

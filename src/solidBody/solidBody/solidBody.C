@@ -769,14 +769,17 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
                 (
                     fluxVelocity(q_[j]) - fluxVelocity(q_[i])
                 );
-                const scalar dtPn = dtP & n, dvPn = dvP & n;
-                vStabN *=
-                    acousticFormulas::slowModeFactor(dtPn, dvPn, 0.5/vStabN);
+                vStabN *= acousticFormulas::slowModeFactor
+                (
+                    dtP & n, dvP & n, 0.5/vStabN
+                );
                 if (vStabT > 0)
                 {
                     vStabT *= acousticFormulas::slowModeFactor
                     (
-                        mag(dtP - dtPn*n), mag(dvP - dvPn*n), 0.5/vStabT
+                        mag(acousticFormulas::tangential(dtP, n)),
+                        mag(acousticFormulas::tangential(dvP, n)),
+                        0.5/vStabT
                     );
                 }
             }

@@ -1548,6 +1548,23 @@ Foam::scalar Foam::contactPair::impactMach
 }
 
 
+bool Foam::contactPair::planeWaveImpact(const solidBody& b) const
+{
+    if (impactMach(b, true) <= 0)
+    {
+        return false;
+    }
+    // Head-on: the bodies close along the patch's normal at least at half
+    // their relative speed (a block sliding on a plate does not strike it)
+    const contactSide& s = (A_.body == &b) ? A_ : B_;
+    const solidBody& other = (A_.body == &b) ? *B_.body : *A_.body;
+    const vector dv(b.initialVelocity() - other.initialVelocity());
+    const vector A(b.dual().patchArea(s.patchi));
+    const scalar closing = (dv & A)/max(mag(A), VSMALL);
+    return closing >= 0.5*mag(dv) && b.planeWaveImpact(s.patchi);
+}
+
+
 void Foam::contactPair::chooseRiemannSolver
 (
     const solidBody& bodyA,

@@ -499,6 +499,27 @@ bool Foam::dualMesh::patchFlat
 }
 
 
+Foam::vector Foam::dualMesh::patchArea(const label patchi) const
+{
+    return returnReduce(sum(patchSubFaces_[patchi].area), sumOp<vector>());
+}
+
+
+Foam::scalar Foam::dualMesh::patchSpan(const label patchi) const
+{
+    const vector A(patchArea(patchi));
+    const scalar magA = mag(A);
+    if (magA < VSMALL)
+    {
+        return 0;
+    }
+    const scalarField Xn(mesh_.points() & (A/magA));
+    const scalar extent = gMax(Xn) - gMin(Xn);
+    const scalar V = sumPoints(volumes());
+    return V > VSMALL ? magA*extent/V : 0;
+}
+
+
 Foam::scalar Foam::dualMesh::minLength() const
 {
     return gMin(lengths());

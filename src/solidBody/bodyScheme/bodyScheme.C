@@ -107,6 +107,7 @@ Foam::bodyScheme::bodyScheme
 :
     dict_(solidProperties, dictionary(fileName("scheme"))),
     shockFromScene_(false),
+    FStabFromScene_(false),
     limiterFromScene_(false)
 {
     if (solidProperties.isDict("scheme"))
@@ -220,11 +221,29 @@ Foam::bodyScheme::bodyScheme
     );
 
     // With the upwind F flux off, bending keeps its energy (its traction
-    // jump term damps bending with large rotation on coarse meshes)
+    // jump term damps bending with large rotation on coarse meshes).  In
+    // a plane-wave impact (a flat patch across the body's section) the
+    // scene turns it on (chooseFromScene) for elastic bodies with shear
+    // stiffness; not for plastic flow (it damps it), nearly
+    // incompressible bodies (their J stabilisation is tuned without it:
+    // the non-matching bars C3 checkerboard with it) or Hugoniot and
+    // shear-free materials (their shocks have their own settings)
+    FStabFromScene_ =
+        automatic("FStabilisation") && !plastic && m.mu() > 0
+     && !nearlyIncompressible && !m.hugoniot();
     FStabilisation_ = choose
     (
         "FStabilisation", false,
-        "it damps bending with large rotation; 'yes' for planar impacts"
+        FStabFromScene_
+      ? string("no plane-wave impact (a flat patch across the body's"
+        " section): it damps bending with large rotation")
+      : plastic
+      ? string("plastic: it damps the plastic flow")
+      : nearlyIncompressible
+      ? string("nearly incompressible: the J stabilisation smooths the"
+        " pressure")
+      : string("pressure-dominated material: its shocks have their own"
+        " settings")
     );
 
     const wordList boundarySlopes({"interior", "riemann"});
@@ -389,9 +408,71 @@ void Foam::bodyScheme::setChoice(const word& key, const string& text)
 void Foam::bodyScheme::chooseFromScene
 (
     const scalar planarMach,
-    const scalar impactMach
+    const scalar impactMach,
+    const bool planeWave
 )
 {
+    // A plane-wave impact: the upwind F flux, with van Albada (Barth-
+    // Jespersen's per-component clipping sends a precursor ahead of the
+    // release wave that the face multiplies, superbee's sharper release
+    // front leaves tension there) and the incoming waves' boundary slopes
+    // (without them a struck point's Green-Gauss slope hides the jump).
+    // The bar tutorials' hand-made choice: doc/results.md, "Plane-wave
+    // impacts".  (Not with 'limiter none' given: the pair needs a limiter
+    // at the struck face, where the unlimited scheme crushes a bar's wall
+    // corner at cfl 1.5)
+    if (FStabFromScene_ && planeWave && secondOrder_ && limiter_ == "none")
+    {
+        setChoice
+        (
+            "FStabilisation",
+            "no  (auto: a plane-wave impact, but without a limiter, which"
+            " the incoming waves' boundary slopes need)"
+        );
+    }
+    else if (FStabFromScene_ && planeWave)
+    {
+        FStabFromScene_ = false;
+        FStabilisation_ = true;
+        setChoice
+        (
+            "FStabilisation",
+            "yes  (auto: a plane-wave impact (a flat patch across the body's"
+            " section): onset and release without overshoot)"
+        );
+        if (limiterFromScene_)
+        {
+            limiterFromScene_ = false;
+            limiter_ = "vanAlbada";
+            setChoice
+            (
+                "limiter",
+                "vanAlbada  (auto: with the upwind F flux: a sharper release"
+                " front leaves tension at the separating face)"
+            );
+        }
+        if (shockFromScene_)
+        {
+            shockFromScene_ = false;
+            shockStabilisation_ = false;
+            setChoice
+            (
+                "shockStabilisation",
+                "no  (auto: the upwind F flux already upwinds F)"
+            );
+        }
+        if (secondOrder_ && automatic("boundarySlope"))
+        {
+            boundarySlope_ = "riemann";
+            setChoice
+            (
+                "boundarySlope",
+                "riemann  (auto: the incoming waves' slope goes with the"
+                " upwind F flux)"
+            );
+        }
+    }
+
     if (limiterFromScene_)
     {
         // Curved impacts only: in a planar one the F flux's onset

@@ -483,7 +483,7 @@ bool Foam::dualMesh::patchFlat
 ) const
 {
     const vectorField& A = patchSubFaces_[patchi].area;
-    const vector mean(returnReduce(sum(A), sumOp<vector>()));
+    const vector mean(patchArea(patchi));
     if (mag(mean) < VSMALL)
     {
         return false;

@@ -704,7 +704,11 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         (
             dual_, q_, G_,
             scheme_->riemannBoundarySlope() ? &residual_ : nullptr,
-            material_->Zp(), material_->Zs()
+            material_->Zp(),
+            acousticFormulas::interiorShearImpedance
+            (
+                material_->Zp(), material_->Zs()
+            )
         );
         limiter_->limit(dual_, q_, G_);
     }

@@ -92,6 +92,23 @@ int main(int argc, char *argv[])
         check("compressed face t_x", tCc.x(), -2 + 2.5*(-2));
         check("compressed face t_y", tCc.y(), 1 + 2.5*0.5*2);
 
+        // The interior flux's tangential impedance: the material's, or
+        // for a shear-free one (Zs = 0) the normal wave's (Rusanov), whose
+        // traction then damps a transverse jump [v_t] = 2 with Zp/2 [v_t]
+        check("interior tangential impedance, Zs = 1",
+            acousticFormulas::interiorShearImpedance(2, 1), 1);
+        check("interior tangential impedance, shear-free",
+            acousticFormulas::interiorShearImpedance(2, 0), 2);
+        const vector tFree
+        (
+            acousticFormulas::interiorStickTraction
+            (
+                tL, tR, vL, vR, n, 1, 2,
+                acousticFormulas::interiorShearImpedance(2, 0)
+            )
+        );
+        check("shear-free interior t_y", tFree.y(), 1 + 1*2);
+
         // The upwind F flux's share of its traction-jump term, Z = 2: a
         // wave ([t] = -Z [v]) keeps all of it, and so does a jump slower
         // than a wave; a shock at twice the wave speed ([t] = 2 Z [v]) gets

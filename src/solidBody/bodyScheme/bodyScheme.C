@@ -419,9 +419,10 @@ void Foam::bodyScheme::chooseFromScene
     // (unlimited, the scheme crushes a bar's wall corner at cfl 1.5; with
     // Barth-Jespersen a Hugoniot bar on a wall at 2.5 c reached -747
     // instead of -875, and at c its step collapsed after the release)
-    const bool vanAlbadaOrAuto =
+    // (first order: no limiter to speak of)
+    const bool limiterSuitsUpwindF =
         !secondOrder_ || automatic("limiter") || limiter_ == "vanAlbada";
-    if (FStabFromScene_ && planeWave && !vanAlbadaOrAuto)
+    if (FStabFromScene_ && planeWave && !limiterSuitsUpwindF)
     {
         setChoice
         (

@@ -697,6 +697,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         upwindF && material_->Zs() > VSMALL ? 0.5/material_->Zs() : 0;
     const scalar ZpBody = material_->Zp();
     const scalar shockMass = upwindF || shockF ? material_->shockMass() : 0;
+    const bool shearFree = material_->Zs() <= VSMALL;
 
     if (scheme_->secondOrder())
     {
@@ -738,9 +739,31 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         const vector n(invMagHN*hN);
         const scalar magHN = hN2*invMagHN;
 
-        // The upwind traction (the body's interior Riemann solver)
+        // The upwind traction (the body's interior Riemann solver).  A
+        // shear-free body's solver sees the points' own tangential
+        // velocities: no wave carries a tangential jump there, so there is
+        // nothing to reconstruct, and the tangential impedance
+        // (acousticFormulas::interiorShearImpedance) damps the points'
+        // jump, at first order, by Z/2 |[v_t]|^2 >= 0 per edge.  (Damping
+        // the reconstructed jump left a transverse mode that grew from
+        // round-off at the contact face of strong Hugoniot impacts:
+        // doc/results.md, "Shear-free bodies")
         const vector tL(PL & N), tR(PR & N);
-        tC = A*traction(tL, tR, vL, vR, n, magHN);
+        if (shearFree)
+        {
+            const vector vi(fluxVelocity(q_[i]));
+            const vector vj(fluxVelocity(q_[j]));
+            tC = A*traction
+            (
+                tL, tR,
+                vi + ((vL - vi) & n)*n, vj + ((vR - vj) & n)*n,
+                n, magHN
+            );
+        }
+        else
+        {
+            tC = A*traction(tL, tR, vL, vR, n, magHN);
+        }
 
         // The upwind (Riemann) velocity: average plus the traction jump
         // over twice the impedances, weighted by how much of the points'

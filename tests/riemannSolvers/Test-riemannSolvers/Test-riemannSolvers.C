@@ -34,6 +34,8 @@ Description
 #include "acoustic.H"
 #include "hugoniot.H"
 #include "pressureDominated.H"
+#include "interiorHugoniot.H"
+#include "materialModel.H"
 #include "IStringStream.H"
 
 using namespace Foam;
@@ -108,6 +110,21 @@ int main(int argc, char *argv[])
             )
         );
         check("shear-free interior t_y", tFree.y(), 1 + 1*2);
+
+        // The interior Hugoniot solver of a shear-free body (A3's material:
+        // Zp = rho c = 1, Zs = 0, s = 1): on a face compressed to Lambda =
+        // 2.5 its tangential impedance is Lambda Zp as the acoustic
+        // solver's; the normal one is the shock's, Zp + rho s Lambda
+        // closing = 1 + 0.01*2.5*2 = 1.05 for the closing speed 2
+        const dictionary dict
+        (
+            (IStringStream("type neoHookean; rho 0.01; kappa 100; mu 0; hugoniot { s 1; }"))()
+        );
+        autoPtr<materialModel> A3(materialModel::New(dict, 1));
+        const interiorRiemannSolvers::hugoniot interiorShock(A3());
+        const vector tH(interiorShock.traction(tL, tR, vL, vR, n, 2.5));
+        check("interior Hugoniot, compressed face t_x", tH.x(), -2 + 0.5*1.05*(-2));
+        check("interior Hugoniot, compressed face t_y", tH.y(), 1 + 0.5*2.5*1*2);
 
         // The upwind F flux's share of its traction-jump term, Z = 2: a
         // wave ([t] = -Z [v]) keeps all of it, and so does a jump slower

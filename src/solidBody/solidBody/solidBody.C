@@ -739,16 +739,20 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         const vector n(invMagHN*hN);
         const scalar magHN = hN2*invMagHN;
 
-        // The upwind traction (the body's interior Riemann solver).  A
-        // shear-free body's solver sees the points' own tangential
-        // velocities: no wave carries a tangential jump there, so there is
-        // nothing to reconstruct, and the tangential impedance
-        // (acousticFormulas::interiorShearImpedance) damps the points'
-        // jump, at first order, by Z/2 |[v_t]|^2 >= 0 per edge.  (Damping
-        // the reconstructed jump left a transverse mode that grew from
-        // round-off at the contact face of strong Hugoniot impacts:
-        // doc/results.md, "Shear-free bodies")
+        // The upwind traction (the body's interior Riemann solver) and the
+        // velocity of the F flux.  In a shear-free body no wave carries a
+        // tangential velocity jump, so there is nothing to reconstruct:
+        // both take the points' own tangential velocities (the normal ones
+        // stay reconstructed).  The solver's tangential impedance
+        // (acousticFormulas::interiorShearImpedance) then damps the
+        // points' jump, at first order, by Z/2 |[v_t]|^2 >= 0 per edge, and
+        // the F flux takes their average, which is exact at the midpoint
+        // for a linear field.  (With the reconstructed tangential
+        // velocities a transverse mode grew from round-off at the contact
+        // face of strong Hugoniot impacts: doc/results.md, "Shear-free
+        // bodies")
         const vector tL(PL & N), tR(PR & N);
+        vector vAverage(0.5*(vL + vR));
         if (shearFree)
         {
             const vector vi(fluxVelocity(q_[i]));
@@ -759,6 +763,8 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
                 vi + ((vL - vi) & n)*n, vj + ((vR - vj) & n)*n,
                 n, magHN
             );
+            const vector vP(0.5*(vi + vj));
+            vAverage = vP + ((vAverage - vP) & n)*n;
         }
         else
         {
@@ -848,7 +854,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         const scalar dtn = dt & n;
         vCA =
             A
-           *(0.5*(vL + vR) + (vStabN*dtn)*n + vStabT*(dt - dtn*n));
+           *(vAverage + (vStabN*dtn)*n + vStabT*(dt - dtn*n));
         dS = JStabilisation ? (1 - w)*Sfactor*A*invS*hN2*(SJR - SJL) : 0;
     };
 

@@ -274,7 +274,7 @@ Foam::bodyScheme::bodyScheme
     // which switches per component with the neighbourhood's extremes,
     // turns round-off into a transverse mode that grows by 1e10 within
     // 0.1 s of compression (doc/results.md, "Pressure-only bars")
-    const bool noShear = (m.mu() <= 0);
+    const bool noShear = m.shearFree();
 
     // Elastic bodies in curved impacts below shockMachThreshold: superbee.
     // Their energy is lost where the impact's fronts are captured, at a

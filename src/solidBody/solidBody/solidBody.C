@@ -697,7 +697,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         upwindF && material_->Zs() > VSMALL ? 0.5/material_->Zs() : 0;
     const scalar ZpBody = material_->Zp();
     const scalar shockMass = upwindF || shockF ? material_->shockMass() : 0;
-    const bool shearFree = material_->Zs() <= VSMALL;
+    const bool shearFree = material_->shearFree();
 
     if (scheme_->secondOrder())
     {

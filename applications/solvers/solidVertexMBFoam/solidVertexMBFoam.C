@@ -63,6 +63,11 @@ int main(int argc, char *argv[])
 
     runStatistics stats(runTime, nPoints, tvdRungeKutta2::nStages);
     scalar nextReport = 0;
+    // A progress line every 5 % of the simulated time, and at least every
+    // reportWallInterval seconds of wall time, so that a run whose step has
+    // become small still shows where it is
+    const scalar reportWallInterval = 30;
+    scalar lastReportWall = 0;
     const scalar endTime = runTime.endTime().value();
     const scalar startTime = runTime.value();
     label stepsThisRun = 0;
@@ -94,6 +99,13 @@ int main(int argc, char *argv[])
     };
 
     #include "failureAdvice.H"
+
+    // The step's collapse (checkDeltaT.H)
+    const scalar collapseRatio = 1e-3;
+    const label collapseSteps = 1000;
+    scalar largestStep = 0;
+    scalar largestStepTime = startTime;
+    label nCollapsedSteps = 0;
 
     Info<< "Starting time loop" << nl << endl;
 
@@ -142,16 +154,21 @@ int main(int argc, char *argv[])
 
         const scalar progress =
             (runTime.value() - startTime)/max(endTime - startTime, VSMALL);
-        if (progress >= nextReport || last)
+        const scalar wall = stats.wallTime();
+        if (progress >= nextReport || last
+         || wall - lastReportWall >= reportWallInterval)
         {
-            const scalar wall = stats.wallTime();
             Info<< "t = " << runTime.timeName() << "  step " << stats.totalSteps()
                 << "  dt " << runTime.deltaTValue()
                 << "  " << label(100*progress + 0.5) << "%"
                 << "  wall " << wall << " s  left "
                 << (progress > 0 ? wall*(1 - progress)/progress : 0)
                 << " s" << endl;
-            nextReport += 0.05;
+            while (nextReport <= progress)
+            {
+                nextReport += 0.05;
+            }
+            lastReportWall = wall;
         }
     }
 

@@ -1250,7 +1250,7 @@ void Foam::solidBody::endStep()
 }
 
 
-Foam::scalar Foam::solidBody::stableDeltaT() const
+Foam::scalar Foam::solidBody::localStableDeltaT() const
 {
     scalar vMax = 0;
     if (material_->hugoniot())
@@ -1261,10 +1261,26 @@ Foam::scalar Foam::solidBody::stableDeltaT() const
         }
         vMax = Foam::sqrt(returnReduce(vMax, maxOp<scalar>()));
     }
-    return returnReduce
-    (
-        stableStep_->deltaT(F_, Hc(), Jc(), vMax), minOp<scalar>()
-    );
+    return stableStep_->deltaT(F_, Hc(), Jc(), vMax);
+}
+
+
+Foam::scalar Foam::solidBody::stableDeltaT() const
+{
+    return returnReduce(localStableDeltaT(), minOp<scalar>());
+}
+
+
+bool Foam::solidBody::stableStepPoint(point& X) const
+{
+    const scalar dtLocal = localStableDeltaT();
+    const scalar dt = returnReduce(dtLocal, minOp<scalar>());
+    const label i = stableStep_->limitingPoint();
+    label proc = (dtLocal == dt && i >= 0) ? Pstream::myProcNo() : Pstream::nProcs();
+    reduce(proc, minOp<label>());
+    X = (proc == Pstream::myProcNo()) ? mesh_.points()[i] : Zero;
+    reduce(X, sumOp<vector>());
+    return proc < Pstream::nProcs();
 }
 
 

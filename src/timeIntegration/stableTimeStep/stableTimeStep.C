@@ -66,6 +66,7 @@ Foam::stableTimeStep::stableTimeStep
     largeStrain_(!material.smallStrain()),
     sJ_(),
     stretch2_(),
+    limitingPoint_(-1),
     rMomentum_(),
     dtRefMin_(GREAT)
 {
@@ -198,6 +199,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
     if (!largeStrain_ && !hugoniot)
     {
         // Small strain without a Hugoniot pressure: constant stiffness
+        limitingPoint_ = -1;
         return dtRefMin_;
     }
 
@@ -305,7 +307,12 @@ Foam::scalar Foam::stableTimeStep::deltaT
               + material_.tieModulus())/kRef;
             r = max(r, max(k, 1.0)*kRef*JFactor*sJ_[i]/V[i]);
         }
-        dt = min(dt, 2/max(r, VSMALL));
+        const scalar dti = 2/max(r, VSMALL);
+        if (dti < dt)
+        {
+            dt = dti;
+            limitingPoint_ = i;
+        }
     }
     return dt;
 }

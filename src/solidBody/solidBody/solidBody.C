@@ -1271,16 +1271,17 @@ Foam::scalar Foam::solidBody::stableDeltaT() const
 }
 
 
-bool Foam::solidBody::stableStepPoint(point& X) const
+Foam::scalar Foam::solidBody::stableDeltaT(point& X) const
 {
     const scalar dtLocal = localStableDeltaT();
     const scalar dt = returnReduce(dtLocal, minOp<scalar>());
     const label i = stableStep_->limitingPoint();
-    label proc = (dtLocal == dt && i >= 0) ? Pstream::myProcNo() : Pstream::nProcs();
+    label proc =
+        (dtLocal == dt && i >= 0) ? Pstream::myProcNo() : Pstream::nProcs();
     reduce(proc, minOp<label>());
     X = (proc == Pstream::myProcNo()) ? mesh_.points()[i] : Zero;
     reduce(X, sumOp<vector>());
-    return proc < Pstream::nProcs();
+    return dt;
 }
 
 

@@ -179,8 +179,12 @@ Foam::stableTimeStep::stableTimeStep
     {
         const scalar rJ =
             JRate ? k*Sint[i]/(material.rho()*cp*V[i]) : 0;
-        dtRefMin_ =
-            min(dtRefMin_, 2/max(max(rMomentum_[i], rJ), VSMALL));
+        const scalar dti = 2/max(max(rMomentum_[i], rJ), VSMALL);
+        if (dti < dtRefMin_)
+        {
+            dtRefMin_ = dti;
+            limitingPoint_ = i;
+        }
     }
 }
 
@@ -198,8 +202,8 @@ Foam::scalar Foam::stableTimeStep::deltaT
     const bool hugoniot = material_.hugoniot();
     if (!largeStrain_ && !hugoniot)
     {
-        // Small strain without a Hugoniot pressure: constant stiffness
-        limitingPoint_ = -1;
+        // Small strain without a Hugoniot pressure: constant stiffness (its
+        // point found with it, in the constructor)
         return dtRefMin_;
     }
 

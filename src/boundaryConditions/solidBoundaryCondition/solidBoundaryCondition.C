@@ -71,6 +71,11 @@ Foam::solidBoundaryCondition::solidBoundaryCondition
     }
     statePoint_.transfer(points);
     stateNormal_.transfer(normals);
+    stateMagA_.setSize(statePoint_.size(), 0.0);
+    forAll(sf.point, s)
+    {
+        stateMagA_[subFaceState_[s]] += mag(sf.area[s]);
+    }
     stateT_.setSize(statePoint_.size());
     stateV_.setSize(statePoint_.size());
     stateP_.setSize(statePoint_.size());
@@ -114,7 +119,8 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     UList<vector>& Rp,
     UList<tensor>& RF,
     UList<vector>& tB,
-    UList<vector>& vB
+    UList<vector>& vB,
+    const deformedDual* deformed
 ) const
 {
     const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
@@ -122,18 +128,38 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     const bool keepStates = tB.size();
     scalar power = 0;
 
+    if (deformed)
+    {
+        stateDeformedA_.setSize(statePoint_.size());
+        stateDeformedA_ = Zero;
+        forAll(sf.point, s)
+        {
+            stateDeformedA_[subFaceState_[s]] += deformed->subFaceArea[s];
+        }
+    }
+
     // The one-sided Riemann state of every distinct (point, normal) pair
     forAll(statePoint_, k)
     {
         const label i = statePoint_[k];
         const vector& N = stateNormal_[k];
         vector n(H[i] & N);
+        vector tL(fluxStress(q[i]) & N);
+        if (deformed)
+        {
+            // The deformed area per unit reference area of the state's
+            // sub-faces in place of H N (the interior's pressure acts on
+            // the deformed dual too: solidBody::addInteriorFluxes)
+            const vector a(stateDeformedA_[k]/stateMagA_[k]);
+            tL += deformed->pressure[i]*(a - n);
+            n = a;
+        }
         const scalar Lambda = mag(n);
         n /= Lambda;
         const waveData w{body.Zp, body.Zs, body.shockMass*Lambda};
         contactState
         (
-            n, N, X[i] + u[i], fluxVelocity(q[i]), fluxStress(q[i]) & N,
+            n, N, X[i] + u[i], fluxVelocity(q[i]), tL,
             w, t, stateT_[k], stateV_[k]
         );
         stateP_[k] = stateT_[k] & stateV_[k];

@@ -1011,6 +1011,29 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
     const List<fluxState>& q = body.q();
     const List<tensor>& H = body.Hc();
 
+    // A body whose pressure acts on the deformed dual (solidBody, scheme
+    // deformedPressure): each point's deformed area per unit reference
+    // area from its sub-faces, in place of H N (on this processor's
+    // sub-faces)
+    const vectorField* deformedA = body.deformedSubFaceAreas(side.patchi);
+    List<vector> aDeformed;
+    if (deformedA)
+    {
+        const dualMesh::patchSubFaces& sf =
+            body.dual().subFaces(side.patchi);
+        aDeformed.setSize(side.points.size(), Zero);
+        scalarField magA(side.points.size(), 0.0);
+        forAll(sf.point, s)
+        {
+            aDeformed[side.sfLocal[s]] += (*deformedA)[s];
+            magA[side.sfLocal[s]] += mag(sf.area[s]);
+        }
+        forAll(aDeformed, i)
+        {
+            aDeformed[i] /= magA[i];
+        }
+    }
+
     List<pointData> local(side.points.size());
     forAll(side.points, i)
     {
@@ -1026,8 +1049,14 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
         // velocity as well breaks the pairing of the momentum and F
         // fluxes (the rings' energy then rose by 0.27 % of E0)
         const tensor& Pr = side.project[i];
-        const vector t(fluxStress(q[p]) & N);
-        const vector hN(H[p] & N);
+        vector t(fluxStress(q[p]) & N);
+        vector hN(H[p] & N);
+        if (deformedA)
+        {
+            // The pressure part pi H N of the traction on the deformed area
+            t += body.pressureCoefficients()[p]*(aDeformed[i] - hN);
+            hN = aDeformed[i];
+        }
         const scalar Lambda = mag(hN);
         // A control volume folded over at a corner can turn H N against
         // the surface; its partner's gap would then be measured backwards

@@ -408,7 +408,9 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     boundaryPoints_(),
     boundaryNormals_(),
     boundaryIndex_(),
-    linearExact_(calcLinearExact())
+    linearExact_(calcLinearExact()),
+    faceEdges_(),
+    deformable_(false)
 {
     const edgeList& edges = mesh.edges();
     const pointField& X = mesh.points();
@@ -425,7 +427,11 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
         // processor's share of their magnitudes)
         pointField cellCentres;
         scalarField cellVolumes;
-        calcCellCentres(cellCentres, cellVolumes);
+        {
+            vectorField faceCentres, faceAreas;
+            calcFaceGeometry(X, faceCentres, faceAreas);
+            calcCellCentres(faceCentres, faceAreas, cellCentres, cellVolumes);
+        }
         checkCells(cellVolumes);
         cellVolumes.clear();
 
@@ -690,6 +696,166 @@ bool Foam::dualMesh::calcLinearExact() const
     }
     reduce(exact, andOp<bool>());
     return exact;
+}
+
+
+void Foam::dualMesh::enableDeformedAreas()
+{
+    const faceList& faces = mesh_.faces();
+    label n = 0;
+    for (const face& f : faces)
+    {
+        n += f.size();
+    }
+    faceEdges_.setSize(n);
+
+    // The edge of every face side, found among the edges of its first
+    // point (the dual's own point-edge lists: OpenFOAM's edge addressing
+    // is not kept)
+    n = 0;
+    forAll(faces, facei)
+    {
+        const face& f = faces[facei];
+        if (f.size() < 3)
+        {
+            FatalErrorInFunction
+                << "Face " << facei << " of mesh " << mesh_.name()
+                << " has " << f.size() << " points: the internal faces were"
+                << " released before the deformed dual was set up"
+                << " (an internal error of the solver)" << exit(FatalError);
+        }
+        forAll(f, fp)
+        {
+            const label a = f[fp];
+            const label b = f.nextLabel(fp);
+            label found = -1;
+            for (label k = pointEdgeStart_[a]; k < pointEdgeStart_[a + 1]; ++k)
+            {
+                const label e = pointEdges_[k];
+                if (otherPoint(e, a) == b)
+                {
+                    found = e;
+                    break;
+                }
+            }
+            if (found < 0)
+            {
+                FatalErrorInFunction
+                    << "Face " << facei << " side " << a << "-" << b
+                    << " is not a mesh edge" << exit(FatalError);
+            }
+            faceEdges_[n++] = (edgeStart_[found] == a) ? found : -found - 1;
+        }
+    }
+    deformable_ = true;
+}
+
+
+void Foam::dualMesh::deformedAreas
+(
+    const pointField& x,
+    vectorField& edgeC,
+    List<vectorField>& subFaceA
+) const
+{
+    if (!deformedAreasEnabled())
+    {
+        FatalErrorInFunction
+            << "Deformed dual areas asked for on mesh " << mesh_.name()
+            << " without enableDeformedAreas() (an internal error of the"
+            << " solver)" << exit(FatalError);
+    }
+
+    // The construction of the reference dual (calcCellContributions,
+    // calcBoundarySubFaces) on the current positions: the dual cells stay
+    // closed polyhedra, sum_j c_ij + sum_g a_g = 0 at every point
+    const faceList& faces = mesh_.faces();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    const label nInternal = mesh_.nInternalFaces();
+
+    calcFaceGeometry(x, deformedFaceCentres_, deformedFaceAreas_);
+    calcCellCentres
+    (
+        deformedFaceCentres_, deformedFaceAreas_,
+        deformedCellCentres_, deformedCellVolumes_
+    );
+    const vectorField& fcs = deformedFaceCentres_;
+    const pointField& ccs = deformedCellCentres_;
+
+    edgeC.setSize(nEdges());
+    edgeC = Zero;
+    label n = 0;
+    forAll(faces, facei)
+    {
+        const face& f = faces[facei];
+        const point& fc = fcs[facei];
+        const point& cOwn = ccs[own[facei]];
+        forAll(f, fp)
+        {
+            const point mNext(0.5*(x[f[fp]] + x[f.nextLabel(fp)]));
+            // The owner's dual triangle, oriented from f[fp] to the next
+            // point, minus the neighbour's (the face points into it)
+            vector S(0.5*((cOwn - mNext) ^ (fc - mNext)));
+            if (facei < nInternal)
+            {
+                S -= 0.5*((ccs[nei[facei]] - mNext) ^ (fc - mNext));
+            }
+            const label se = faceEdges_[n++];
+            if (se >= 0)
+            {
+                edgeC[se] += S;
+            }
+            else
+            {
+                edgeC[-se - 1] -= S;
+            }
+        }
+    }
+
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    subFaceA.setSize(patches.size());
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        vectorField& a = subFaceA[patchi];
+        a.setSize(patchSubFaces_[patchi].size());
+        if (a.empty())
+        {
+            continue;
+        }
+        label s = 0;
+        forAll(pp, i)
+        {
+            const face& f = pp[i];
+            const point& fc = fcs[pp.start() + i];
+            forAll(f, fp)
+            {
+                const point& xa = x[f[fp]];
+                a[s++] = subFaceArea
+                (
+                    xa,
+                    0.5*(xa + x[f.nextLabel(fp)]),
+                    fc,
+                    0.5*(x[f.prevLabel(fp)] + xa)
+                );
+            }
+        }
+    }
+}
+
+
+bool Foam::dualMesh::triangleBoundary() const
+{
+    bool found = false;
+    for (const patchSubFaces& sf : patchSubFaces_)
+    {
+        for (const scalar w : sf.nbrWeight)
+        {
+            found = found || w > 0;
+        }
+    }
+    return returnReduce(found, orOp<bool>());
 }
 
 

@@ -75,17 +75,34 @@ void Foam::dualMesh::faceGeometry
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::dualMesh::calcFaceGeometry
+(
+    const pointField& p,
+    vectorField& faceCentres,
+    vectorField& faceAreas
+) const
+{
+    const faceList& faces = mesh_.faces();
+    faceCentres.setSize(faces.size());
+    faceAreas.setSize(faces.size());
+    forAll(faces, facei)
+    {
+        faceGeometry(faces[facei], p, faceCentres[facei], faceAreas[facei]);
+    }
+}
+
+
 void Foam::dualMesh::calcCellCentres
 (
+    const vectorField& faceCentres,
+    const vectorField& faceAreas,
     pointField& cellCentres,
     scalarField& cellVolumes
 ) const
 {
-    // primitiveMesh::makeCellCentresAndVols with the face geometry computed
-    // on the fly: an estimate from the face centres, then the volume-
-    // weighted centroid of the face pyramids about it
-    const pointField& X = mesh_.points();
-    const faceList& faces = mesh_.faces();
+    // primitiveMesh::makeCellCentresAndVols: an estimate from the face
+    // centres, then the volume-weighted centroid of the face pyramids
+    // about it
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
 
@@ -96,17 +113,14 @@ void Foam::dualMesh::calcCellCentres
 
     pointField cEst(mesh_.nCells(), Zero);
     labelList nCellFaces(mesh_.nCells(), 0);
-    vector fc, fA;
     forAll(own, facei)
     {
-        faceGeometry(faces[facei], X, fc, fA);
-        cEst[own[facei]] += fc;
+        cEst[own[facei]] += faceCentres[facei];
         ++nCellFaces[own[facei]];
     }
     forAll(nei, facei)
     {
-        faceGeometry(faces[facei], X, fc, fA);
-        cEst[nei[facei]] += fc;
+        cEst[nei[facei]] += faceCentres[facei];
         ++nCellFaces[nei[facei]];
     }
     forAll(cEst, celli)
@@ -116,16 +130,16 @@ void Foam::dualMesh::calcCellCentres
 
     forAll(own, facei)
     {
-        faceGeometry(faces[facei], X, fc, fA);
-        const scalar pyr3Vol = fA & (fc - cEst[own[facei]]);
+        const vector& fc = faceCentres[facei];
+        const scalar pyr3Vol = faceAreas[facei] & (fc - cEst[own[facei]]);
         const vector pc((3.0/4.0)*fc + (1.0/4.0)*cEst[own[facei]]);
         cellCentres[own[facei]] += pyr3Vol*pc;
         cellVolumes[own[facei]] += pyr3Vol;
     }
     forAll(nei, facei)
     {
-        faceGeometry(faces[facei], X, fc, fA);
-        const scalar pyr3Vol = fA & (cEst[nei[facei]] - fc);
+        const vector& fc = faceCentres[facei];
+        const scalar pyr3Vol = faceAreas[facei] & (cEst[nei[facei]] - fc);
         const vector pc((3.0/4.0)*fc + (1.0/4.0)*cEst[nei[facei]]);
         cellCentres[nei[facei]] += pyr3Vol*pc;
         cellVolumes[nei[facei]] += pyr3Vol;

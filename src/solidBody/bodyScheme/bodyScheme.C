@@ -102,7 +102,8 @@ Foam::bodyScheme::bodyScheme
 (
     const dictionary& solidProperties,
     const materialModel& m,
-    const bool linearExact
+    const bool linearExact,
+    const bool triangleBoundary
 )
 :
     dict_(solidProperties, dictionary(fileName("scheme"))),
@@ -134,7 +135,8 @@ Foam::bodyScheme::bodyScheme
         {
             "secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw",
             "energyStable", "riemannSolver", "FStabilisation",
-            "shockStabilisation", "boundarySlope", "contactRotation"
+            "shockStabilisation", "boundarySlope", "contactRotation",
+            "deformedPressure"
         }
     );
 
@@ -335,6 +337,41 @@ Foam::bodyScheme::bodyScheme
       : string("with the upwind F flux: a sharper release front leaves"
         " tension at the separating face")
     );
+
+    // A shear-free body's stress is a pressure times H.  With H N at the
+    // points a uniform pressure pushes every point where H varies (the
+    // discrete divergence of the points' cofactors is not zero), and at
+    // strong impacts a transverse mode grows from it until the run stops
+    // (two A3 bars at Mach 5 from a 1e-6 seed: 5.6 % of v0 by t = 0.3).
+    // On the deformed dual's closed cells a uniform pressure is in
+    // equilibrium exactly (doc/method.md, "Pressure on the deformed dual")
+    // A boundary of triangles integrates its tractions with its points'
+    // neighbours' (dualMesh::patchSubFaces), which the deformed dual's
+    // closure does not balance: on tets the bars then stopped sooner (A3
+    // on 64 tets at Mach 1 at t = 0.21, where it runs without)
+    const bool deformable = pressureOnly && !m.smallStrain();
+    deformedPressure_ = choose
+    (
+        "deformedPressure", deformable && !triangleBoundary,
+        !deformable
+      ? string("shear stiffness or small strain: H N carries the stress")
+      : triangleBoundary
+      ? string("triangular boundary faces: their neighbour-weighted"
+        " quadrature does not balance the deformed dual")
+      : string("shear-free: a uniform pressure on the closed dual cells of"
+        " the deformed mesh exerts no force")
+    );
+    if (deformedPressure_ && !deformable)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "deformedPressure yes in " << dict_.name() << " needs a"
+            << " finite-strain material without shear stiffness (mu 0):"
+            << " this one has "
+            << (m.smallStrain() ? "small strain" : "shear stiffness")
+            << " (its stress is not a pressure times cof F)." << nl
+            << "    Valid for this material: no (or auto)"
+            << exit(FatalIOError);
+    }
 
     // The product's invariant: the numerical dissipation never decreases.
     // Where the fluxes would produce energy the stage blends towards first

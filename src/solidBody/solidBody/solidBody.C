@@ -34,7 +34,13 @@ void Foam::solidBody::readScheme()
 
     // Each switch given in the scheme dictionary or chosen from the
     // material (bodyScheme.H)
-    scheme_.reset(new bodyScheme(dict_, material_(), dual_.linearExact()));
+    scheme_.reset
+    (
+        new bodyScheme
+        (
+            dict_, material_(), dual_.linearExact(), dual_.triangleBoundary()
+        )
+    );
     if (scheme_->energyStable())
     {
         energyStability_.reset(new energyStability(dual_, scheme_->JLaw()));
@@ -325,15 +331,21 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
 {
     // The dual mesh holds all the solver needs: free OpenFOAM's
     // demand-driven geometry and addressing, and the point lists of the
-    // internal faces
+    // internal faces (kept where the pressure acts on the deformed dual)
+    material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
+    readScheme();
     mesh_.clearGeom();
     mesh_.clearAddressing();
+    if (scheme_->deformedPressure())
+    {
+        dual_.enableDeformedAreas();
+        xDeformed_.setSize(mesh_.nPoints());
+        pressureCoeff_.setSize(mesh_.nPoints());
+    }
     releaseUnusedMesh();
     malloc_trim(0);
     checkDecomposition();
 
-    material_ = materialModel::New(dict_.subDict("material"), mesh_.nPoints());
-    readScheme();
     riemann_ = interiorRiemannSolver::New
     (
         scheme_->dict(), scheme_->riemannSolver(), material_()
@@ -370,6 +382,8 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
             << " at the point at " << invalidPoint_ << exit(FatalError);
     }
     readBookkeeping();
+    // (what contact reads of the body before the first stage)
+    updateDeformedDual();
 }
 
 
@@ -598,6 +612,28 @@ bool Foam::solidBody::updateConstitutive()
 void Foam::solidBody::startStage()
 {
     residual_.reset();
+    updateDeformedDual();
+}
+
+
+void Foam::solidBody::updateDeformedDual()
+{
+    // The deformed dual and the points' pressure coefficients for this
+    // stage's fluxes (doc/method.md, "Pressure on the deformed dual")
+    if (scheme_->deformedPressure())
+    {
+        const pointField& X = mesh_.points();
+        forAll(X, i)
+        {
+            xDeformed_[i] = X[i] + u_[i];
+        }
+        dual_.deformedAreas(xDeformed_, deformedEdgeC_, deformedSubFaceA_);
+        const List<tensor>& H = Hc();
+        forAll(q_, i)
+        {
+            pressureCoeff_[i] = (fluxStress(q_[i]) && H[i])/(H[i] && H[i]);
+        }
+    }
 }
 
 
@@ -698,6 +734,11 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     const scalar ZpBody = material_->Zp();
     const scalar shockMass = upwindF || shockF ? material_->shockMass() : 0;
     const bool shearFree = material_->shearFree();
+    // The pressure on the deformed dual: the central part of the traction,
+    // pi H N A, acts on the deformed area vector instead
+    const vector* __restrict__ deformedC =
+        scheme_->deformedPressure() ? deformedEdgeC_.cdata() : nullptr;
+    const scalar* __restrict__ pressureCoeff = pressureCoeff_.cdata();
 
     if (scheme_->secondOrder())
     {
@@ -765,6 +806,17 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
             );
             const vector vP(0.5*(vi + vj));
             vAverage = vP + ((vAverage - vP) & n)*n;
+
+            // On the deformed dual a uniform pressure is in equilibrium at
+            // every point: its closed cells' area vectors sum to zero,
+            // where the points' H N do not (the discrete divergence of the
+            // cofactors is not zero where H varies)
+            if (deformedC)
+            {
+                tC +=
+                    (0.5*(pressureCoeff[i] + pressureCoeff[j]))
+                   *(deformedC[e] - A*hN);
+            }
         }
         else
         {
@@ -1027,11 +1079,17 @@ void Foam::solidBody::addBoundaryFluxes(const scalar t)
     for (const solidBoundaryCondition& bc : bcs_)
     {
         const label patchi = bc.patchi();
+        const vectorField* a = deformedSubFaceAreas(patchi);
+        const solidBoundaryCondition::deformedDual deformed
+        {
+            a ? *a : vectorField::null(), pressureCoeff_
+        };
         residual_.power += bc.addFluxes
         (
             u_, q_, H, body, t, residual_.momentum, residual_.F,
             residual_.boundaryTraction[patchi],
-            residual_.boundaryVelocity[patchi]
+            residual_.boundaryVelocity[patchi],
+            a ? &deformed : nullptr
         );
         residual_.boundarySet[patchi] = true;
     }
@@ -1373,10 +1431,14 @@ void Foam::solidBody::releaseUnusedMesh()
     // tetrahedral meshes this frees about a sixth of the run's memory
     // (three labels and an allocation per face, some eleven faces per
     // point).  The mesh is never written (its files are not touched)
-    faceList& faces = const_cast<faceList&>(mesh_.faces());
-    for (label f = 0; f < mesh_.nInternalFaces(); ++f)
+    // The deformed dual (deformedPressure) reads them every stage
+    if (!dual_.deformedAreasEnabled())
     {
-        faces[f].clear();
+        faceList& faces = const_cast<faceList&>(mesh_.faces());
+        for (label f = 0; f < mesh_.nInternalFaces(); ++f)
+        {
+            faces[f].clear();
+        }
     }
 
     // Nor does it read zones (gmsh's physical groups become zones: a label
@@ -1393,10 +1455,13 @@ void Foam::solidBody::checkReleasedFaces() const
     // internal faces are released: stop rather than use it
     if
     (
+        !dual_.deformedAreasEnabled()
+     && (
         mesh_.hasEdges() || mesh_.hasPointEdges() || mesh_.hasFaceEdges()
      || mesh_.hasCellPoints() || mesh_.hasPointFaces() || mesh_.hasCellEdges()
      || mesh_.hasPointPoints() || mesh_.hasCellShapes()
      || mesh_.hasFaceCentres() || mesh_.hasCellCentres()
+        )
     )
     {
         FatalErrorInFunction

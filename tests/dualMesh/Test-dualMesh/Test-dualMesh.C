@@ -73,7 +73,8 @@ int main(int argc, char *argv[])
 
     const scalar tol = args.getOrDefault<scalar>("tol", 1e-12);
 
-    const dualMesh dual(mesh);
+    // (not const: section 5 asks it for the deformed dual)
+    dualMesh dual(mesh);
 
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
@@ -266,7 +267,153 @@ int main(int argc, char *argv[])
         );
     }
 
-    // 5. Dump with serial point labels ---------------------------------------
+    // 5. The deformed dual (dualMesh::deformedAreas) ------------------------
+    //    On the reference positions it is the reference dual; under a
+    //    linear map x = A X its area vectors are cof(A) times the
+    //    reference ones; under any deformation its cells stay closed
+    {
+        dual.enableDeformedAreas();
+        const pointField& X = mesh.points();
+        const boundBox bb(X, true);
+        const scalar L = bb.mag();
+
+        vectorField c0, c;
+        List<vectorField> a0, a;
+        dual.deformedAreas(X, c0, a0);
+
+        // This processor's part of each edge's reference vector, and the
+        // largest relative difference of two sets of area vectors
+        auto maxDiff = [&]
+        (
+            const vectorField& c1, const List<vectorField>& a1,
+            const vectorField& c2, const List<vectorField>& a2
+        )
+        {
+            scalar err = 0, scale = 0;
+            forAll(c1, e)
+            {
+                err = max(err, mag(c1[e] - c2[e]));
+                scale = max(scale, mag(c2[e]));
+            }
+            forAll(a1, patchi)
+            {
+                forAll(a1[patchi], k)
+                {
+                    err = max(err, mag(a1[patchi][k] - a2[patchi][k]));
+                    scale = max(scale, mag(a2[patchi][k]));
+                }
+            }
+            reduce(err, maxOp<scalar>());
+            reduce(scale, maxOp<scalar>());
+            return err/scale;
+        };
+
+        if (!Pstream::parRun())
+        {
+            List<vectorField> aRef(patches.size());
+            forAll(patches, patchi)
+            {
+                aRef[patchi] = dual.subFaces(patchi).area;
+            }
+            const scalar err = maxDiff(c0, a0, C, aRef);
+            check(err < tol, "deformed dual on X = reference dual", err, tol);
+        }
+
+        // A linear map (stretch, shear and rotation, det A = 1.05)
+        const tensor A
+        (
+            1.2, 0.3, -0.1,
+            0.05, 0.9, 0.2,
+            0.1, -0.25, 1.1
+        );
+        pointField x(A & X);
+        dual.deformedAreas(x, c, a);
+        const tensor cofA(cof(A));
+        vectorField cA(cofA & c0);
+        List<vectorField> aA(a0.size());
+        forAll(a0, patchi)
+        {
+            aA[patchi] = cofA & a0[patchi];
+        }
+        const scalar errLinear = maxDiff(c, a, cA, aA);
+        // (Exact where every face is flat: a warped face's centroid, the
+        // area-weighted one of its triangles, does not follow a linear map)
+        bool flat = true;
+        forAll(mesh.faces(), facei)
+        {
+            const face& f = mesh.faces()[facei];
+            const vector n(mesh.faceAreas()[facei]);
+            const scalar magN = mag(n);
+            for (const label pi : f)
+            {
+                flat =
+                    flat
+                 && mag((X[pi] - mesh.faceCentres()[facei]) & n)
+                  < 1e-12*magN*std::sqrt(magN);
+            }
+        }
+        reduce(flat, andOp<bool>());
+        if (flat)
+        {
+            check
+            (
+                errLinear < 10*tol, "deformed dual under x = A X: cof(A) C",
+                errLinear, 10*tol
+            );
+        }
+        else
+        {
+            Info<< "    info deformed dual under x = A X (warped faces): "
+                << errLinear << " from cof(A) C" << endl;
+        }
+
+        // A non-linear deformation: the deformed cells stay closed
+        forAll(X, i)
+        {
+            const vector d((X[i] - bb.min())/L);
+            x[i] =
+                X[i]
+              + 0.1*L*vector
+                (
+                    std::sin(3*d.y()) + d.z()*d.z(),
+                    std::cos(2*d.x())*d.z(),
+                    std::sin(4*d.x() + d.y())
+                );
+        }
+        dual.deformedAreas(x, c, a);
+        vectorField residual(nPts, Zero);
+        scalarField scale(nPts, 0.0);
+        forAll(es, e)
+        {
+            residual[es[e]] += c[e];
+            residual[ee[e]] -= c[e];
+            scale[es[e]] += mag(c[e]);
+            scale[ee[e]] += mag(c[e]);
+        }
+        forAll(a, patchi)
+        {
+            const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
+            forAll(sf.point, k)
+            {
+                residual[sf.point[k]] += a[patchi][k];
+                scale[sf.point[k]] += mag(a[patchi][k]);
+            }
+        }
+        dual.syncPointResidual(residual);
+        dual.syncPointResidual(scale);
+        scalar maxRel = 0;
+        forAll(residual, i)
+        {
+            maxRel = max(maxRel, mag(residual[i])/scale[i]);
+        }
+        reduce(maxRel, maxOp<scalar>());
+        check
+        (
+            maxRel < tol, "deformed dual closure |sum c|/sum|c|", maxRel, tol
+        );
+    }
+
+    // 6. Dump with serial point labels ---------------------------------------
     if (args.found("dump"))
     {
         labelList global(identity(nPts));

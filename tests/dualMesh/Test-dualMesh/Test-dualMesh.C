@@ -51,6 +51,48 @@ void check(const bool ok, const word& name, const scalar value, const scalar tol
 } // End anonymous namespace
 
 
+// Largest |sum of a point's area vectors| over their magnitudes' sum: this
+// processor's part of every edge's vector (oriented start to end) and every
+// physical patch's sub-face areas, summed over processors at shared points
+scalar closureError
+(
+    const dualMesh& dual,
+    const vectorField& edgeC,
+    const List<vectorField>& subFaceA
+)
+{
+    const labelList& es = dual.edgeStart();
+    const labelList& ee = dual.edgeEnd();
+    vectorField residual(dual.nPoints(), Zero);
+    scalarField scale(dual.nPoints(), 0.0);
+    forAll(es, e)
+    {
+        residual[es[e]] += edgeC[e];
+        residual[ee[e]] -= edgeC[e];
+        scale[es[e]] += mag(edgeC[e]);
+        scale[ee[e]] += mag(edgeC[e]);
+    }
+    forAll(subFaceA, patchi)
+    {
+        const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
+        forAll(sf.point, k)
+        {
+            residual[sf.point[k]] += subFaceA[patchi][k];
+            scale[sf.point[k]] += mag(subFaceA[patchi][k]);
+        }
+    }
+    dual.syncPointResidual(residual);
+    dual.syncPointResidual(scale);
+
+    scalar maxRel = 0;
+    forAll(residual, i)
+    {
+        maxRel = max(maxRel, mag(residual[i])/scale[i]);
+    }
+    return returnReduce(maxRel, maxOp<scalar>());
+}
+
+
 int main(int argc, char *argv[])
 {
     argList::addNote("Check the median dual mesh against its invariants");
@@ -93,33 +135,12 @@ int main(int argc, char *argv[])
 
     // 1. Closure ------------------------------------------------------------
     {
-        vectorField residual(nPts, Zero);
-        scalarField scale(nPts, 0.0);
-        forAll(es, e)
-        {
-            residual[es[e]] += w[e]*C[e];
-            residual[ee[e]] -= w[e]*C[e];
-            scale[es[e]] += w[e]*mag(C[e]);
-            scale[ee[e]] += w[e]*mag(C[e]);
-        }
+        List<vectorField> subFaceA(patches.size());
         forAll(patches, patchi)
         {
-            const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
-            forAll(sf.point, k)
-            {
-                residual[sf.point[k]] += sf.area[k];
-                scale[sf.point[k]] += mag(sf.area[k]);
-            }
+            subFaceA[patchi] = dual.subFaces(patchi).area;
         }
-        dual.syncPointResidual(residual);
-        dual.syncPointResidual(scale);
-
-        scalar maxRel = 0;
-        forAll(residual, i)
-        {
-            maxRel = max(maxRel, mag(residual[i])/scale[i]);
-        }
-        reduce(maxRel, maxOp<scalar>());
+        const scalar maxRel = closureError(dual, w*C, subFaceA);
         check(maxRel < tol, "closure |sum C|/sum|C|", maxRel, tol);
     }
 
@@ -381,32 +402,7 @@ int main(int argc, char *argv[])
                 );
         }
         dual.deformedAreas(x, c, a);
-        vectorField residual(nPts, Zero);
-        scalarField scale(nPts, 0.0);
-        forAll(es, e)
-        {
-            residual[es[e]] += c[e];
-            residual[ee[e]] -= c[e];
-            scale[es[e]] += mag(c[e]);
-            scale[ee[e]] += mag(c[e]);
-        }
-        forAll(a, patchi)
-        {
-            const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
-            forAll(sf.point, k)
-            {
-                residual[sf.point[k]] += a[patchi][k];
-                scale[sf.point[k]] += mag(a[patchi][k]);
-            }
-        }
-        dual.syncPointResidual(residual);
-        dual.syncPointResidual(scale);
-        scalar maxRel = 0;
-        forAll(residual, i)
-        {
-            maxRel = max(maxRel, mag(residual[i])/scale[i]);
-        }
-        reduce(maxRel, maxOp<scalar>());
+        const scalar maxRel = closureError(dual, c, a);
         check
         (
             maxRel < tol, "deformed dual closure |sum c|/sum|c|", maxRel, tol

@@ -427,11 +427,7 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
         // processor's share of their magnitudes)
         pointField cellCentres;
         scalarField cellVolumes;
-        {
-            vectorField faceCentres, faceAreas;
-            calcFaceGeometry(X, faceCentres, faceAreas);
-            calcCellCentres(faceCentres, faceAreas, cellCentres, cellVolumes);
-        }
+        calcCellCentres(X, nullptr, nullptr, cellCentres, cellVolumes);
         checkCells(cellVolumes);
         cellVolumes.clear();
 
@@ -777,7 +773,7 @@ void Foam::dualMesh::deformedAreas
     calcFaceGeometry(x, deformedFaceCentres_, deformedFaceAreas_);
     calcCellCentres
     (
-        deformedFaceCentres_, deformedFaceAreas_,
+        x, &deformedFaceCentres_, &deformedFaceAreas_,
         deformedCellCentres_, deformedCellVolumes_
     );
     const vectorField& fcs = deformedFaceCentres_;

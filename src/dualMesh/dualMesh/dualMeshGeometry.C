@@ -94,17 +94,34 @@ void Foam::dualMesh::calcFaceGeometry
 
 void Foam::dualMesh::calcCellCentres
 (
-    const vectorField& faceCentres,
-    const vectorField& faceAreas,
+    const pointField& p,
+    const vectorField* faceCentres,
+    const vectorField* faceAreas,
     pointField& cellCentres,
     scalarField& cellVolumes
 ) const
 {
     // primitiveMesh::makeCellCentresAndVols: an estimate from the face
     // centres, then the volume-weighted centroid of the face pyramids
-    // about it
+    // about it.  The face geometry is computed on the fly unless given
+    // (the reference dual's construction keeps no face-sized lists: they
+    // would raise the run's peak memory, which is reached while the mesh
+    // still holds OpenFOAM's own addressing)
+    const faceList& faces = mesh_.faces();
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
+    auto geometry = [&](const label facei, vector& fc, vector& fA)
+    {
+        if (faceCentres)
+        {
+            fc = (*faceCentres)[facei];
+            fA = (*faceAreas)[facei];
+        }
+        else
+        {
+            faceGeometry(faces[facei], p, fc, fA);
+        }
+    };
 
     cellCentres.setSize(mesh_.nCells());
     cellVolumes.setSize(mesh_.nCells());
@@ -113,14 +130,17 @@ void Foam::dualMesh::calcCellCentres
 
     pointField cEst(mesh_.nCells(), Zero);
     labelList nCellFaces(mesh_.nCells(), 0);
+    vector fc, fA;
     forAll(own, facei)
     {
-        cEst[own[facei]] += faceCentres[facei];
+        geometry(facei, fc, fA);
+        cEst[own[facei]] += fc;
         ++nCellFaces[own[facei]];
     }
     forAll(nei, facei)
     {
-        cEst[nei[facei]] += faceCentres[facei];
+        geometry(facei, fc, fA);
+        cEst[nei[facei]] += fc;
         ++nCellFaces[nei[facei]];
     }
     forAll(cEst, celli)
@@ -130,16 +150,16 @@ void Foam::dualMesh::calcCellCentres
 
     forAll(own, facei)
     {
-        const vector& fc = faceCentres[facei];
-        const scalar pyr3Vol = faceAreas[facei] & (fc - cEst[own[facei]]);
+        geometry(facei, fc, fA);
+        const scalar pyr3Vol = fA & (fc - cEst[own[facei]]);
         const vector pc((3.0/4.0)*fc + (1.0/4.0)*cEst[own[facei]]);
         cellCentres[own[facei]] += pyr3Vol*pc;
         cellVolumes[own[facei]] += pyr3Vol;
     }
     forAll(nei, facei)
     {
-        const vector& fc = faceCentres[facei];
-        const scalar pyr3Vol = faceAreas[facei] & (cEst[nei[facei]] - fc);
+        geometry(facei, fc, fA);
+        const scalar pyr3Vol = fA & (cEst[nei[facei]] - fc);
         const vector pc((3.0/4.0)*fc + (1.0/4.0)*cEst[nei[facei]]);
         cellCentres[nei[facei]] += pyr3Vol*pc;
         cellVolumes[nei[facei]] += pyr3Vol;

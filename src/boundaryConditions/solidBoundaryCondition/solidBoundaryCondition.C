@@ -150,9 +150,10 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
             // The deformed area per unit reference area of the state's
             // sub-faces in place of H N (the interior's pressure acts on
             // the deformed dual too: solidBody::addInteriorFluxes)
-            const vector a(stateDeformedA_[k]/stateMagA_[k]);
-            tL += deformed->pressure[i]*(a - n);
-            n = a;
+            deformed->toDeformedArea
+            (
+                i, stateDeformedA_[k]/stateMagA_[k], tL, n
+            );
         }
         const scalar Lambda = mag(n);
         n /= Lambda;

@@ -1015,9 +1015,12 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
     // deformedPressure): each point's deformed area per unit reference
     // area from its sub-faces, in place of H N (on this processor's
     // sub-faces)
-    const vectorField* deformedA = body.deformedSubFaceAreas(side.patchi);
+    const autoPtr<solidBoundaryCondition::deformedDual> deformed
+    (
+        body.deformedDual(side.patchi)
+    );
     List<vector> aDeformed;
-    if (deformedA)
+    if (deformed)
     {
         const dualMesh::patchSubFaces& sf =
             body.dual().subFaces(side.patchi);
@@ -1025,7 +1028,7 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
         scalarField magA(side.points.size(), 0.0);
         forAll(sf.point, s)
         {
-            aDeformed[side.sfLocal[s]] += (*deformedA)[s];
+            aDeformed[side.sfLocal[s]] += deformed->subFaceArea[s];
             magA[side.sfLocal[s]] += mag(sf.area[s]);
         }
         forAll(aDeformed, i)
@@ -1051,11 +1054,9 @@ Foam::List<Foam::contactPair::pointData> Foam::contactPair::localData
         const tensor& Pr = side.project[i];
         vector t(fluxStress(q[p]) & N);
         vector hN(H[p] & N);
-        if (deformedA)
+        if (deformed)
         {
-            // The pressure part pi H N of the traction on the deformed area
-            t += body.pressureCoefficients()[p]*(aDeformed[i] - hN);
-            hN = aDeformed[i];
+            deformed->toDeformedArea(p, aDeformed[i], t, hN);
         }
         const scalar Lambda = mag(hN);
         // A control volume folded over at a corner can turn H N against

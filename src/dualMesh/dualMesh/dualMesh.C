@@ -37,6 +37,19 @@ inline Foam::vector subFaceArea
     return 0.5*(((mNext - a) ^ (fc - a)) + ((fc - a) ^ (mPrev - a)));
 }
 
+// Area vector of the dual triangle (edge midpoint, face centre, cell
+// centre) of the edge from a face point to the next one, oriented from that
+// point to the next when the face points out of the cell
+inline Foam::vector dualTriangleArea
+(
+    const Foam::point& mNext,
+    const Foam::point& fc,
+    const Foam::point& cc
+)
+{
+    return 0.5*((cc - mNext) ^ (fc - mNext));
+}
+
 // Signed volume of the pyramid with apex cc over that sub-face, positive
 // when the face is oriented away from cc
 inline Foam::scalar subFacePyramidVolume
@@ -175,7 +188,7 @@ void Foam::dualMesh::calcCellContributions
                 // Dual triangle (midpoint, face centre, cell centre) of edge
                 // a-b in this cell; with the face oriented out of the cell
                 // this orientation points from a to b
-                const vector S(sgn*0.5*((cc - mNext) ^ (fc - mNext)));
+                const vector S(sgn*dualTriangleArea(mNext, fc, cc));
                 const label e = edgeOf(edges, pointEdges[a], a, b);
                 if (edgeStart_[e] == a)
                 {
@@ -792,10 +805,10 @@ void Foam::dualMesh::deformedAreas
             const point mNext(0.5*(x[f[fp]] + x[f.nextLabel(fp)]));
             // The owner's dual triangle, oriented from f[fp] to the next
             // point, minus the neighbour's (the face points into it)
-            vector S(0.5*((cOwn - mNext) ^ (fc - mNext)));
+            vector S(dualTriangleArea(mNext, fc, cOwn));
             if (facei < nInternal)
             {
-                S -= 0.5*((ccs[nei[facei]] - mNext) ^ (fc - mNext));
+                S -= dualTriangleArea(mNext, fc, ccs[nei[facei]]);
             }
             const label se = faceEdges_[n++];
             if (se >= 0)

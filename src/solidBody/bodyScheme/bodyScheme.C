@@ -344,7 +344,7 @@ Foam::bodyScheme::bodyScheme
     // strong impacts a transverse mode grows from it until the run stops
     // (two A3 bars at Mach 5 from a 1e-6 seed: 5.6 % of v0 by t = 0.3).
     // On the deformed dual's closed cells a uniform pressure is in
-    // equilibrium exactly (doc/method.md, "Pressure on the deformed dual")
+    // equilibrium exactly (doc/method.md, "Pressure on the deformed dual").
     // A boundary of triangles integrates its tractions with its points'
     // neighbours' (dualMesh::patchSubFaces), which the deformed dual's
     // closure does not balance: on tets the bars then stopped sooner (A3

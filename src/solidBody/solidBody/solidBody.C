@@ -1079,17 +1079,12 @@ void Foam::solidBody::addBoundaryFluxes(const scalar t)
     for (const solidBoundaryCondition& bc : bcs_)
     {
         const label patchi = bc.patchi();
-        const vectorField* a = deformedSubFaceAreas(patchi);
-        const solidBoundaryCondition::deformedDual deformed
-        {
-            a ? *a : vectorField::null(), pressureCoeff_
-        };
         residual_.power += bc.addFluxes
         (
             u_, q_, H, body, t, residual_.momentum, residual_.F,
             residual_.boundaryTraction[patchi],
             residual_.boundaryVelocity[patchi],
-            a ? &deformed : nullptr
+            deformedDual(patchi).get()
         );
         residual_.boundarySet[patchi] = true;
     }

@@ -101,6 +101,7 @@ inline bool lexLess(const Foam::point& p, const Foam::point& q)
 } // End anonymous namespace
 
 
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::dualMesh::checkCells(const scalarField& V) const
@@ -266,8 +267,6 @@ void Foam::dualMesh::calcBoundarySubFaces()
 
 void Foam::dualMesh::synchronise(vectorField& edgeC)
 {
-    scalarField edgeWeight(edgeC.size(), 1.0);
-
     if (Pstream::parRun())
     {
         const pointField& X = mesh_.points();
@@ -303,17 +302,23 @@ void Foam::dualMesh::synchronise(vectorField& edgeC)
                 edgeC[e] = -edgeC[e];
             }
         }
-        edgeWeight = edgeWeights();
     }
 
-    edgeNormal_.setSize(edgeC.size());
+    // The normals are made in place and the list handed over: a second
+    // edge-sized vector list would sit on the construction's memory peak
     edgeMagSf_.setSize(edgeC.size());
     forAll(edgeC, e)
     {
         const scalar magC = mag(edgeC[e]);
-        edgeNormal_[e] = edgeC[e]/max(magC, VSMALL);
-        edgeMagSf_[e] = magC*edgeWeight[e];
+        edgeC[e] /= max(magC, VSMALL);
+        edgeMagSf_[e] = magC;
     }
+    if (Pstream::parRun())
+    {
+        // Each processor holding a shared edge keeps its share
+        edgeMagSf_ *= edgeWeights();
+    }
+    edgeNormal_.transfer(edgeC);
 }
 
 
@@ -674,30 +679,33 @@ bool Foam::dualMesh::calcLinearExact() const
          && mag(X[f[0]] - X[f[1]] + X[f[2]] - X[f[3]])
          <= 1e-8*(mag(X[f[2]] - X[f[0]]) + mag(X[f[3]] - X[f[1]]));
     };
-    auto exactCell = [&](const cell& c)
+    // Counted face by face from the owner and neighbour lists: the cells'
+    // face lists (primitiveMesh::cells(), about 50 bytes per cell) would be
+    // built for this alone and held at the construction's memory peak
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    labelList nCellFaces(mesh_.nCells(), 0);
+    boolList parallelogramsOnly(mesh_.nCells(), true);
+    forAll(faces, facei)
     {
-        if (c.size() == 4)
+        const bool p = parallelogram(faces[facei]);
+        ++nCellFaces[own[facei]];
+        parallelogramsOnly[own[facei]] &= p;
+        if (facei < nei.size())
         {
-            return true;
+            ++nCellFaces[nei[facei]];
+            parallelogramsOnly[nei[facei]] &= p;
         }
-        if (c.size() != 6)
-        {
-            return false;
-        }
-        for (const label facei : c)
-        {
-            if (!parallelogram(faces[facei]))
-            {
-                return false;
-            }
-        }
-        return true;
-    };
+    }
 
     bool exact = true;
-    for (const cell& c : mesh_.cells())
+    forAll(nCellFaces, celli)
     {
-        if (!exactCell(c))
+        if
+        (
+            nCellFaces[celli] != 4
+         && !(nCellFaces[celli] == 6 && parallelogramsOnly[celli])
+        )
         {
             exact = false;
             break;

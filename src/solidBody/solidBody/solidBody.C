@@ -272,6 +272,7 @@ void Foam::solidBody::readBookkeeping()
 }
 
 
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::solidBody::solidBody(const Time& runTime, const word& region)
@@ -1422,10 +1423,12 @@ void Foam::solidBody::releaseUnusedMesh()
     // Nothing reads the internal faces once the dual is built: the
     // boundary conditions, contact, point fields (pointMesh) and processor
     // exchanges (globalMeshData's coupled patch) read the boundary faces,
-    // which stay, and the face count, owners and neighbours stay too.  On
-    // tetrahedral meshes this frees about a sixth of the run's memory
-    // (three labels and an allocation per face, some eleven faces per
-    // point).  The mesh is never written (its files are not touched)
+    // which stay, and the face count and owners stay too (a patch's
+    // faceCells are its part of the owners).  On tetrahedral meshes this
+    // frees about a sixth of the run's memory (three labels and an
+    // allocation per face, some eleven faces per point), and the
+    // neighbours, which only the internal faces have, some 40 bytes per
+    // point more.  The mesh is never written (its files are not touched).
     // The deformed dual (deformedPressure) reads them every stage
     if (!dual_.deformedAreasEnabled())
     {
@@ -1434,6 +1437,7 @@ void Foam::solidBody::releaseUnusedMesh()
         {
             faces[f].clear();
         }
+        const_cast<labelList&>(mesh_.faceNeighbour()).clear();
     }
 
     // Nor does it read zones (gmsh's physical groups become zones: a label

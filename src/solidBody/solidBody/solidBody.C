@@ -1304,7 +1304,10 @@ void Foam::solidBody::endStep()
 }
 
 
-Foam::scalar Foam::solidBody::localStableDeltaT() const
+Foam::scalar Foam::solidBody::localStableDeltaT
+(
+    UList<scalar>* pointDeltaT
+) const
 {
     scalar vMax = 0;
     if (material_->hugoniot())
@@ -1315,7 +1318,7 @@ Foam::scalar Foam::solidBody::localStableDeltaT() const
         }
         vMax = Foam::sqrt(returnReduce(vMax, maxOp<scalar>()));
     }
-    return stableStep_->deltaT(F_, Hc(), Jc(), vMax);
+    return stableStep_->deltaT(F_, Hc(), Jc(), vMax, pointDeltaT);
 }
 
 
@@ -1500,6 +1503,14 @@ void Foam::solidBody::write()
         mesh_, "p", dimPressure,
         [this](const label i) { return -tr(cauchyStress(i))/3.0; }
     );
+    {
+        // Each point's stable step (cfl = 1) in the written state: the run
+        // steps with cfl times their minimum (unless a closing contact gap
+        // asks for less), so the field shows what sets the step
+        scalarField pointDeltaT(nPts);
+        localStableDeltaT(&pointDeltaT);
+        writePointFieldLending(mesh_, "stableDeltaT", pointDeltaT, dimTime);
+    }
     residual_.setSize(nPts, scheme_->JLaw());
     material_->writeState(mesh_);
 

@@ -196,14 +196,23 @@ Foam::scalar Foam::stableTimeStep::deltaT
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    const scalar vMax
+    const scalar vMax,
+    UList<scalar>* pointDeltaT
 ) const
 {
     const bool hugoniot = material_.hugoniot();
     if (!largeStrain_ && !hugoniot)
     {
         // Small strain without a Hugoniot pressure: constant stiffness (its
-        // point found with it, in the constructor)
+        // point found with it, in the constructor; such a material sets no
+        // J rate)
+        if (pointDeltaT)
+        {
+            forAll(rMomentum_, i)
+            {
+                (*pointDeltaT)[i] = 2/max(rMomentum_[i], VSMALL);
+            }
+        }
         return dtRefMin_;
     }
 
@@ -312,6 +321,10 @@ Foam::scalar Foam::stableTimeStep::deltaT
             r = max(r, max(k, 1.0)*kRef*JFactor*sJ_[i]/V[i]);
         }
         const scalar dti = 2/max(r, VSMALL);
+        if (pointDeltaT)
+        {
+            (*pointDeltaT)[i] = dti;
+        }
         if (dti < dt)
         {
             dt = dti;

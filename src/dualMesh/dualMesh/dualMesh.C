@@ -101,7 +101,6 @@ inline bool lexLess(const Foam::point& p, const Foam::point& q)
 } // End anonymous namespace
 
 
-
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::dualMesh::checkCells(const scalarField& V) const

@@ -272,7 +272,6 @@ void Foam::solidBody::readBookkeeping()
 }
 
 
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::solidBody::solidBody(const Time& runTime, const word& region)

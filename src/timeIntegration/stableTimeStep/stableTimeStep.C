@@ -17,6 +17,13 @@
 namespace
 {
 
+// The stable step (cfl = 1) of a point of rate r (the bound r dt = 2; the
+// constructor, the state's step and the per-point field all take it here)
+inline Foam::scalar stepOfRate(const Foam::scalar r)
+{
+    return 2/Foam::max(r, Foam::VSMALL);
+}
+
 // Largest eigenvalue of a symmetric tensor.  (OpenFOAM v1912's eigenValues
 // solves the general cubic: with the repeated roots of a symmetric stencil
 // its round-off gives "complex eigenvalues" warnings.)
@@ -179,7 +186,7 @@ Foam::stableTimeStep::stableTimeStep
     {
         const scalar rJ =
             JRate ? k*Sint[i]/(material.rho()*cp*V[i]) : 0;
-        const scalar dti = 2/max(max(rMomentum_[i], rJ), VSMALL);
+        const scalar dti = stepOfRate(max(rMomentum_[i], rJ));
         if (dti < dtRefMin_)
         {
             dtRefMin_ = dti;
@@ -210,7 +217,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
         {
             forAll(rMomentum_, i)
             {
-                (*pointDeltaT)[i] = 2/max(rMomentum_[i], VSMALL);
+                (*pointDeltaT)[i] = stepOfRate(rMomentum_[i]);
             }
         }
         return dtRefMin_;
@@ -320,7 +327,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
               + material_.tieModulus())/kRef;
             r = max(r, max(k, 1.0)*kRef*JFactor*sJ_[i]/V[i]);
         }
-        const scalar dti = 2/max(r, VSMALL);
+        const scalar dti = stepOfRate(r);
         if (pointDeltaT)
         {
             (*pointDeltaT)[i] = dti;

@@ -37,6 +37,7 @@ Description
 #include "solidBody.H"
 #include "bodyMonitor.H"
 #include "tvdRungeKutta2.H"
+#include "multirateRungeKutta2.H"
 
 using namespace Foam;
 
@@ -60,6 +61,7 @@ int main(int argc, char *argv[])
 
     #include "createBodies.H"
     #include "createContacts.H"
+    #include "createMultirate.H"
 
     runStatistics stats(runTime, nPoints, tvdRungeKutta2::nStages);
     scalar nextReport = 0;
@@ -117,27 +119,39 @@ int main(int argc, char *argv[])
         const scalar t0 = runTime.value();
         const scalar dt = runTime.stepToTargets
         (
-            tvdRungeKutta2::stableDeltaT(bodies, contacts, cfl)
+            multirate.valid()
+          ? multirate->deltaT(bodies, cfl)
+          : tvdRungeKutta2::stableDeltaT(bodies, contacts, cfl)
         );
         #include "checkDeltaT.H"
         runTime.setDeltaT(dt, false);
         ++runTime;
 
         scalar stepFraction = 1;
-        const label failed = tvdRungeKutta2::step
-        (
-            bodies, contacts, t0, runTime.deltaTValue(), stepFraction
-        );
+        const label failed =
+            multirate.valid()
+          ? multirate->step(bodies, t0, runTime.deltaTValue(), stepFraction)
+          : tvdRungeKutta2::step
+            (
+                bodies, contacts, t0, runTime.deltaTValue(), stepFraction
+            );
         runTime.shortenStep(stepFraction);
 
         #include "checkState.H"
 
-        stats.step();
         ++stepsThisRun;
-
-        for (solidBody& b : bodies)
+        if (multirate.valid())
         {
-            b.endStep();
+            // (each level committed its points' plastic state)
+            stats.step(multirate->lastUpdates());
+        }
+        else
+        {
+            stats.step();
+            for (solidBody& b : bodies)
+            {
+                b.endStep();
+            }
         }
 
         forAll(monitors, b)
@@ -163,7 +177,13 @@ int main(int argc, char *argv[])
                 << "  " << label(100*progress + 0.5) << "%"
                 << "  wall " << wall << " s  left "
                 << (progress > 0 ? wall*(1 - progress)/progress : 0)
-                << " s" << endl;
+                << " s";
+            if (multirate.valid())
+            {
+                Info<< "  points per level "
+                    << flatOutput(multirate->pointsPerLevel());
+            }
+            Info<< endl;
             while (nextReport <= progress)
             {
                 nextReport += 0.05;
@@ -193,9 +213,17 @@ int main(int argc, char *argv[])
         {
             Info<< "Body " << b.name() << ": energyStable blended the"
                 << " interior fluxes towards first order in "
-                << b.nEnergyLimitedStages() << " of "
-                << stats.totalSteps()*tvdRungeKutta2::nStages
-                << " stages since t = 0 (smallest second-order weight "
+                << b.nEnergyLimitedStages();
+            if (multirate.valid())
+            {
+                Info<< " level stages (multirate) this run";
+            }
+            else
+            {
+                Info<< " of " << stats.totalSteps()*tvdRungeKutta2::nStages
+                    << " stages since t = 0";
+            }
+            Info<< " (smallest second-order weight "
                 << b.minEnergyBlending() << ")" << nl;
         }
         if (b.scheme().contactRotation() && b.contactRotations().anyPoints())

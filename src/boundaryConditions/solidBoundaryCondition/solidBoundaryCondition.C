@@ -109,6 +109,87 @@ Foam::autoPtr<Foam::solidBoundaryCondition> Foam::solidBoundaryCondition::New
 }
 
 
+void Foam::solidBoundaryCondition::solveState
+(
+    const label k,
+    const UList<vector>& u,
+    const UList<fluxState>& q,
+    const UList<tensor>& H,
+    const waveData& body,
+    const scalar t,
+    const deformedDual* deformed
+) const
+{
+    const label i = statePoint_[k];
+    const vector& N = stateNormal_[k];
+    vector n(H[i] & N);
+    vector tL(fluxStress(q[i]) & N);
+    if (deformed)
+    {
+        // The deformed area per unit reference area of the state's
+        // sub-faces in place of H N (the interior's pressure acts on
+        // the deformed dual too: solidBody::addInteriorFluxes)
+        deformed->toDeformedArea
+        (
+            i, stateDeformedA_[k]/stateMagA_[k], tL, n
+        );
+    }
+    const scalar Lambda = mag(n);
+    n /= Lambda;
+    const waveData w{body.Zp, body.Zs, body.shockMass*Lambda};
+    contactState
+    (
+        n, N, dual_.mesh().points()[i] + u[i], fluxVelocity(q[i]), tL,
+        w, t, stateT_[k], stateV_[k]
+    );
+    stateP_[k] = stateT_[k] & stateV_[k];
+}
+
+
+Foam::scalar Foam::solidBoundaryCondition::addSubFaceFlux
+(
+    const label s,
+    UList<vector>& Rp,
+    UList<tensor>& RF,
+    UList<vector>& tB,
+    UList<vector>& vB
+) const
+{
+    const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
+    const label i = sf.point[s];
+    const scalar magA = mag(sf.area[s]);
+    const label k = subFaceState_[s];
+
+    vector tC(stateT_[k]);
+    vector vC(stateV_[k]);
+
+    // The power is the same quadrature of the pointwise power t.v, not
+    // the product of the averaged t and v: a fixed frictionless wall or
+    // a symmetry plane then does no work, as in the continuum (the
+    // product of averages is not zero at a contact perimeter, where an
+    // open neighbour approaching the wall meets a closed point's
+    // pressure, and would hide numerical dissipation as external work)
+    scalar pC = stateP_[k];
+    const scalar w = sf.nbrWeight[s];
+    if (w > 0)
+    {
+        const label kP = subFacePrevState_[s], kN = subFaceNextState_[s];
+        tC = (1 - 2*w)*tC + w*(stateT_[kP] + stateT_[kN]);
+        vC = (1 - 2*w)*vC + w*(stateV_[kP] + stateV_[kN]);
+        pC = (1 - 2*w)*pC + w*(stateP_[kP] + stateP_[kN]);
+    }
+
+    Rp[i] += magA*tC;
+    RF[i] += vC*sf.area[s];
+    if (tB.size())
+    {
+        tB[s] = tC;
+        vB[s] = vC;
+    }
+    return magA*pC;
+}
+
+
 Foam::scalar Foam::solidBoundaryCondition::addFluxes
 (
     const UList<vector>& u,
@@ -120,13 +201,62 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     UList<tensor>& RF,
     UList<vector>& tB,
     UList<vector>& vB,
-    const deformedDual* deformed
+    const deformedDual* deformed,
+    const labelUList* points
 ) const
 {
     const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi_);
-    const pointField& X = dual_.mesh().points();
-    const bool keepStates = tB.size();
     scalar power = 0;
+
+    if (points)
+    {
+        // The sub-faces of some points only (multirate stepping): each
+        // state solved once, when a sub-face first needs it
+        if (pointSubFaceStart_.empty())
+        {
+            const label nPoints = dual_.mesh().nPoints();
+            pointSubFaceStart_.setSize(nPoints + 1, 0);
+            for (const label i : sf.point)
+            {
+                ++pointSubFaceStart_[i + 1];
+            }
+            for (label i = 0; i < nPoints; ++i)
+            {
+                pointSubFaceStart_[i + 1] += pointSubFaceStart_[i];
+            }
+            pointSubFaces_.setSize(sf.size());
+            labelList next(SubList<label>(pointSubFaceStart_, nPoints));
+            forAll(sf.point, s)
+            {
+                pointSubFaces_[next[sf.point[s]]++] = s;
+            }
+            stateStage_.setSize(statePoint_.size(), -1);
+        }
+        ++stage_;
+        auto need = [&](const label k)
+        {
+            if (stateStage_[k] != stage_)
+            {
+                stateStage_[k] = stage_;
+                solveState(k, u, q, H, body, t, nullptr);
+            }
+        };
+        for (const label i : *points)
+        {
+            for (label m = pointSubFaceStart_[i]; m < pointSubFaceStart_[i + 1]; ++m)
+            {
+                const label s = pointSubFaces_[m];
+                need(subFaceState_[s]);
+                if (subFacePrevState_[s] >= 0)
+                {
+                    need(subFacePrevState_[s]);
+                    need(subFaceNextState_[s]);
+                }
+                power += addSubFaceFlux(s, Rp, RF, tB, vB);
+            }
+        }
+        return power;
+    }
 
     if (deformed)
     {
@@ -141,64 +271,11 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     // The one-sided Riemann state of every distinct (point, normal) pair
     forAll(statePoint_, k)
     {
-        const label i = statePoint_[k];
-        const vector& N = stateNormal_[k];
-        vector n(H[i] & N);
-        vector tL(fluxStress(q[i]) & N);
-        if (deformed)
-        {
-            // The deformed area per unit reference area of the state's
-            // sub-faces in place of H N (the interior's pressure acts on
-            // the deformed dual too: solidBody::addInteriorFluxes)
-            deformed->toDeformedArea
-            (
-                i, stateDeformedA_[k]/stateMagA_[k], tL, n
-            );
-        }
-        const scalar Lambda = mag(n);
-        n /= Lambda;
-        const waveData w{body.Zp, body.Zs, body.shockMass*Lambda};
-        contactState
-        (
-            n, N, X[i] + u[i], fluxVelocity(q[i]), tL,
-            w, t, stateT_[k], stateV_[k]
-        );
-        stateP_[k] = stateT_[k] & stateV_[k];
+        solveState(k, u, q, H, body, t, deformed);
     }
-
     forAll(sf.point, s)
     {
-        const label i = sf.point[s];
-        const scalar magA = mag(sf.area[s]);
-        const label k = subFaceState_[s];
-
-        vector tC(stateT_[k]);
-        vector vC(stateV_[k]);
-
-        // The power is the same quadrature of the pointwise power t.v, not
-        // the product of the averaged t and v: a fixed frictionless wall or
-        // a symmetry plane then does no work, as in the continuum (the
-        // product of averages is not zero at a contact perimeter, where an
-        // open neighbour approaching the wall meets a closed point's
-        // pressure, and would hide numerical dissipation as external work)
-        scalar pC = stateP_[k];
-        const scalar w = sf.nbrWeight[s];
-        if (w > 0)
-        {
-            const label kP = subFacePrevState_[s], kN = subFaceNextState_[s];
-            tC = (1 - 2*w)*tC + w*(stateT_[kP] + stateT_[kN]);
-            vC = (1 - 2*w)*vC + w*(stateV_[kP] + stateV_[kN]);
-            pC = (1 - 2*w)*pC + w*(stateP_[kP] + stateP_[kN]);
-        }
-
-        Rp[i] += magA*tC;
-        RF[i] += vC*sf.area[s];
-        power += magA*pC;
-        if (keepStates)
-        {
-            tB[s] = tC;
-            vB[s] = vC;
-        }
+        power += addSubFaceFlux(s, Rp, RF, tB, vB);
     }
 
     return power;

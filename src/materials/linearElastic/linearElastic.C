@@ -28,10 +28,11 @@ void Foam::materialModels::linearElastic::stress
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    UList<fluxState>& q
+    UList<fluxState>& q,
+    const labelUList* points
 ) const
 {
-    forAll(F, i)
+    forEachPoint(F.size(), points, [&](const label i)
     {
         const tensor& f = F[i];
         const scalar trF = tr(f);
@@ -42,7 +43,7 @@ void Foam::materialModels::linearElastic::stress
             mu_*(f + f.T() - (2.0/3.0)*trF*I) + sJ*I,
             sJ
         );
-    }
+    });
 }
 
 

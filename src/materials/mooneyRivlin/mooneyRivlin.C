@@ -39,10 +39,11 @@ void Foam::materialModels::mooneyRivlin::stress
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    UList<fluxState>& q
+    UList<fluxState>& q,
+    const labelUList* points
 ) const
 {
-    forAll(F, i)
+    forEachPoint(F.size(), points, [&](const label i)
     {
         // Isochoric part from F and H (through det F), volumetric part
         // from the conserved J
@@ -63,7 +64,7 @@ void Foam::materialModels::mooneyRivlin::stress
           + (sDet + sJ + couplingPressure(detF, J[i]))*H[i],
             sJ + couplingSigmaJ(detF, J[i])
         );
-    }
+    });
 }
 
 

@@ -28,10 +28,11 @@ void Foam::materialModels::neoHookean::stress
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    UList<fluxState>& q
+    UList<fluxState>& q,
+    const labelUList* points
 ) const
 {
-    forAll(F, i)
+    forEachPoint(F.size(), points, [&](const label i)
     {
         // Isochoric part from F (through det F = H:F/3), volumetric part
         // from the conserved J (see the class description)
@@ -49,7 +50,7 @@ void Foam::materialModels::neoHookean::stress
             )*H[i],
             sJ + couplingSigmaJ(detF, J[i])
         );
-    }
+    });
 }
 
 

@@ -208,13 +208,14 @@ void Foam::materialModels::vonMisesPlasticity::stress
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
-    UList<fluxState>& q
+    UList<fluxState>& q,
+    const labelUList* points
 ) const
 {
     symmTensor e;
     scalar dgamma, Jp;
 
-    forAll(F, i)
+    forEachPoint(F.size(), points, [&](const label i)
     {
         returnMap(F[i], J[i], CpInv_[i], epsP_[i], e, dgamma, Jp);
 
@@ -248,7 +249,7 @@ void Foam::materialModels::vonMisesPlasticity::stress
                 cbrt(sqr(detF))*transform(Finv, exponential(2*e));
             returnedDissipation_[i] = plasticDissipation(dgamma, e);
         }
-    }
+    });
 }
 
 
@@ -335,13 +336,14 @@ void Foam::materialModels::vonMisesPlasticity::updateState
 (
     const UList<tensor>& F,
     const UList<scalar>& J,
-    UList<scalar>& dD
+    UList<scalar>& dD,
+    const labelUList* points
 )
 {
     // Commit the returned state of the final stress evaluation (of this
     // F): the stress of the state is unchanged by it, since its trial
     // state is now the returned one
-    forAll(F, i)
+    forEachPoint(F.size(), points, [&](const label i)
     {
         dD[i] = 0;
         if (returnedEpsP_[i] > epsP_[i])
@@ -350,7 +352,7 @@ void Foam::materialModels::vonMisesPlasticity::updateState
             epsP_[i] = returnedEpsP_[i];
             dD[i] = returnedDissipation_[i];
         }
-    }
+    });
 }
 
 

@@ -22,6 +22,8 @@ Foam::runStatistics::runStatistics
     nPoints_(nPoints),
     nStages_(nStages),
     nSteps_(0),
+    nUpdates_(0),
+    multirate_(false),
     nStepsBefore_(0),
     wallBefore_(0),
     nRunsBefore_(0)
@@ -52,7 +54,7 @@ void Foam::runStatistics::write(const Time& runTime) const
     dict.add
     (
         "throughput",
-        scalar(nSteps_)*nStages_*nPoints_/wall/Pstream::nProcs()
+        nUpdates_/wall/Pstream::nProcs()
     );
     dict.add("peakMemory", returnReduce(peakMemory(), sumOp<scalar>()));
     writeUniformState("runStatistics", runTime, dict);
@@ -85,9 +87,17 @@ void Foam::runStatistics::report(Ostream& os) const
     const scalar memory = returnReduce(peakMemory(), sumOp<scalar>());
     const label nProcs = Pstream::nProcs();
 
-    os  << "Finished " << nSteps_ << " steps in " << wall << " s wall" << nl
-        << "Throughput: "
-        << scalar(nSteps_)*nStages_*nPoints_/wall/nProcs
+    os  << "Finished " << nSteps_ << " steps in " << wall << " s wall" << nl;
+    if (multirate_)
+    {
+        // The work in steps of every point, for comparison with one
+        // global step
+        os  << "Multirate: " << nUpdates_ << " point-stage updates, the"
+            << " work of " << label(nUpdates_/(scalar(nStages_)*nPoints_))
+            << " steps of every point" << nl;
+    }
+    os  << "Throughput: "
+        << nUpdates_/wall/nProcs
         << " point-stage updates per second per core (" << nPoints_
         << " points, " << nProcs << " cores)" << nl
         << "Peak memory: " << memory/1048576 << " MB, "

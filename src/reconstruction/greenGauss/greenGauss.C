@@ -9,6 +9,27 @@
 namespace
 {
 
+// Sub-face s of a physical patch in the difference form (f_g - f_i) C_g,
+// f_g = f_i + w (f_prev + f_next - 2 f_i) (dualMesh.H)
+inline void addSubFaceGradient
+(
+    const Foam::dualMesh::patchSubFaces& sf,
+    const Foam::label s,
+    const Foam::UList<Foam::fluxState>& q,
+    Foam::fluxStateGradient& Gi
+)
+{
+    using namespace Foam;
+    const scalar w = sf.nbrWeight[s];
+    const fluxState& qi = q[sf.point[s]];
+    const fluxState& qp = q[sf.prev[s]];
+    const fluxState& qn = q[sf.next[s]];
+    for (direction c = 0; c < nFluxComponents; ++c)
+    {
+        addGradient(Gi, c, (w*(qp[c] + qn[c] - 2*qi[c]))*sf.area[s]);
+    }
+}
+
 // The Green-Gauss sums (not yet divided by the volumes) of the boundary
 // points with the slope of the incoming waves along each patch normal N
 // from the boundary (greenGauss.H).  Along N, with t = P N and
@@ -212,17 +233,7 @@ void Foam::greenGaussGradient
         forAll(sf.point, s)
         {
             const label i = sf.point[s];
-            const scalar w = sf.nbrWeight[s];
-            const fluxState& qi = q[i];
-            const fluxState& qp = q[sf.prev[s]];
-            const fluxState& qn = q[sf.next[s]];
-            for (direction c = 0; c < nFluxComponents; ++c)
-            {
-                addGradient
-                (
-                    G[i], c, (w*(qp[c] + qn[c] - 2*qi[c]))*sf.area[s]
-                );
-            }
+            addSubFaceGradient(sf, s, q, G[i]);
         }
     }
 
@@ -244,6 +255,76 @@ void Foam::greenGaussGradient
     }
 
     forAll(G, i)
+    {
+        const scalar invV = 1.0/V[i];
+        for (gradientScalar& g : G[i])
+        {
+            g *= invV;
+        }
+    }
+}
+
+
+void Foam::greenGaussGradient
+(
+    const dualMesh& dual,
+    const UList<fluxState>& q,
+    List<fluxStateGradient>& G,
+    const labelUList& points,
+    const labelUList& pointSubFaceStart,
+    const labelUList& subFacePatch,
+    const labelUList& subFace
+)
+{
+    const labelList& es = dual.edgeStart();
+    const labelList& ee = dual.edgeEnd();
+    const vectorField& Ne = dual.edgeNormals();
+    const scalarField& Ae = dual.edgeMagSf();
+    const scalarField& V = dual.volumes();
+    const labelList& pes = dual.pointEdgeStart();
+    const labelList& pe = dual.pointEdges();
+
+    // Each listed point sums its own edges (an edge between two listed
+    // points is visited from both: the sum of the full pass, per point)
+    for (const label i : points)
+    {
+        gradientScalar* __restrict__ Gi = G[i].data();
+        for (label k = 0; k < fluxStateGradient::size(); ++k)
+        {
+            Gi[k] = 0;
+        }
+        const scalar* __restrict__ qi = q[i].cdata();
+        const direction n = nFluxComponents;
+        for (label k = pes[i]; k < pes[i + 1]; ++k)
+        {
+            const label e = pe[k];
+            // (the normal points from the edge's start to its end)
+            const bool start = (es[e] == i);
+            const label j = start ? ee[e] : es[e];
+            const vector C((start ? 0.5 : -0.5)*Ae[e]*Ne[e]);
+            const gradientScalar Cx = C.x(), Cy = C.y(), Cz = C.z();
+            const scalar* __restrict__ qj = q[j].cdata();
+            for (direction c = 0; c < n; ++c)
+            {
+                const gradientScalar f = qj[c] - qi[c];
+                Gi[c] += f*Cx;
+                Gi[n + c] += f*Cy;
+                Gi[2*n + c] += f*Cz;
+            }
+        }
+    }
+
+    for (const label i : points)
+    {
+        for (label m = pointSubFaceStart[i]; m < pointSubFaceStart[i + 1]; ++m)
+        {
+            const dualMesh::patchSubFaces& sf = dual.subFaces(subFacePatch[m]);
+            const label s = subFace[m];
+            addSubFaceGradient(sf, s, q, G[i]);
+        }
+    }
+
+    for (const label i : points)
     {
         const scalar invV = 1.0/V[i];
         for (gradientScalar& g : G[i])

@@ -306,6 +306,8 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     riemann_(),
     nEnergyLimited_(0),
     minEnergyTheta_(1),
+    levelEnergyBudget_(0),
+    levelStageWeight_(0),
     stepEnergy0_(0),
     nRelaxedSteps_(0),
     minRelaxation_(1),
@@ -517,28 +519,29 @@ void Foam::solidBody::restoreState()
 }
 
 
-bool Foam::solidBody::updateConstitutive()
+bool Foam::solidBody::updateConstitutive(const labelUList* points)
 {
     stateChanged();
     const scalar invRho = 1.0/material_->rho();
+    const label n = lm_.size();
 
-    forAll(lm_, i)
+    forEachPoint(n, points, [&](const label i)
     {
         setFluxVelocity(q_[i], invRho*lm_[i]);
-    }
+    });
     if (!scheme_->HLaw())
     {
-        forAll(F_, i)
+        forEachPoint(n, points, [&](const label i)
         {
             Hc_[i] = cofactor(F_[i]);
-        }
+        });
     }
     if (!scheme_->JLaw())
     {
-        forAll(F_, i)
+        forEachPoint(n, points, [&](const label i)
         {
             Jc_[i] = det(F_[i]);
-        }
+        });
     }
 
     // An inverted or collapsed volume (or NaN) must not reach the material
@@ -549,7 +552,7 @@ bool Foam::solidBody::updateConstitutive()
     // non-finite J, det F or momentum: the run stops with where and when)
     label bad = -1;
     label kind = 0;
-    forAll(J, i)
+    const auto check = [&](const label i)
     {
         const scalar detF = (H[i] && F_[i])/3.0;
         const scalar lm2 = magSqr(lm_[i]);
@@ -576,12 +579,27 @@ bool Foam::solidBody::updateConstitutive()
                 kind = 2;
                 invalidValue_ = invRho*std::sqrt(lm2);
             }
-            break;
+            return false;
+        }
+        return true;
+    };
+    if (points)
+    {
+        for (const label i : *points)
+        {
+            if (!check(i)) break;
+        }
+    }
+    else
+    {
+        for (label i = 0; i < n; ++i)
+        {
+            if (!check(i)) break;
         }
     }
     if (returnReduce(bad < 0, andOp<bool>()))
     {
-        material_->stress(F_, H, J, q_);
+        material_->stress(F_, H, J, q_, points);
         return true;
     }
 
@@ -689,22 +707,31 @@ struct stickTraction
 } // End anonymous namespace
 
 
-void Foam::solidBody::addInteriorFluxes()
+void Foam::solidBody::addInteriorFluxes
+(
+    const labelUList* edges,
+    const labelUList* edgePoints
+)
 {
     scalar Zp = 0, Zs = 0;
     if (riemann_->constantImpedances(Zp, Zs))
     {
-        addInteriorFluxes(stickTraction{Zp, Zs});
+        addInteriorFluxes(stickTraction{Zp, Zs}, edges, edgePoints);
     }
     else
     {
-        addInteriorFluxes(solverTraction{riemann_()});
+        addInteriorFluxes(solverTraction{riemann_()}, edges, edgePoints);
     }
 }
 
 
 template<class Traction>
-void Foam::solidBody::addInteriorFluxes(const Traction& traction)
+void Foam::solidBody::addInteriorFluxes
+(
+    const Traction& traction,
+    const labelUList* edges,
+    const labelUList* edgePoints
+)
 {
     const labelList& es = dual_.edgeStart();
     const labelList& ee = dual_.edgeEnd();
@@ -740,7 +767,7 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
         scheme_->deformedPressure() ? deformedEdgeC_.cdata() : nullptr;
     const scalar* __restrict__ pressureCoeff = pressureCoeff_.cdata();
 
-    if (scheme_->secondOrder())
+    if (scheme_->secondOrder() && !edges)
     {
         greenGaussGradient
         (
@@ -997,14 +1024,93 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
     // Interior fluxes: one pass over the edges (energy stability first
     // keeps the boundary and contact residuals added before)
     const bool energyStable =
-        energyStability_.valid() && scheme_->secondOrder();
+        energyStability_.valid() && scheme_->secondOrder() && !edges;
     if (energyStable)
     {
         energyStability_->setAside(residual_);
     }
     vector tC, vCA;
     scalar dS;
-    if (scheme_->secondOrder())
+    if (edges)
+    {
+        // Multirate stepping: one level's edges, their energy production
+        // summed as they go (with its rounding scale)
+        const bool blend =
+            edgePoints && energyStability_.valid() && scheme_->secondOrder();
+        scalar S2 = 0, scale = 0;
+        for (const label e : *edges)
+        {
+            if (scheme_->secondOrder())
+            {
+                secondOrderFlux(e, tC, vCA, dS);
+            }
+            else
+            {
+                firstOrderFlux(e, tC, vCA, dS);
+            }
+            addFlux(e, tC, vCA, dS);
+            if (blend)
+            {
+                S2 += production(e, tC, vCA, dS);
+                const fluxState& qi = q_[es[e]];
+                const fluxState& qj = q_[ee[e]];
+                scale +=
+                    Ae[e]
+                   *(
+                        mag(fluxVelocity(qi))*mag(fluxStress(qi))
+                      + mag(fluxVelocity(qj))*mag(fluxStress(qj))
+                    );
+            }
+        }
+        // energyStable across the levels: this stage's edges enter the
+        // step's energy with weight w (h/2 in the stage's Heun average);
+        // what the earlier stages of the step dissipated (the budget, <=
+        // 0) may be spent, beyond it the edges' fluxes are blended towards
+        // first order (the blend of energyStability.H): the step's
+        // production over all levels then stays <= 0, as one global step's
+        const scalar w = levelStageWeight_;
+        if (!blend || !(levelEnergyBudget_ + w*S2 > 1e-12*w*scale))
+        {
+            if (blend)
+            {
+                levelEnergyBudget_ += w*S2;
+            }
+            return;
+        }
+
+        // The residuals of edgePoints hold only these edges' fluxes
+        // (multirateRungeKutta2 adds the others after)
+        scalar S1 = 0;
+        for (const label e : *edges)
+        {
+            firstOrderFlux(e, tC, vCA, dS);
+            S1 += production(e, tC, vCA, dS);
+        }
+        S1 = min(S1, 0.0);
+        const scalar allowed = -levelEnergyBudget_/w;
+        const scalar theta =
+            S1 < allowed ? min(1.0, (allowed - S1)/(S2 - S1)) : 0;
+        levelEnergyBudget_ = min(0.0, levelEnergyBudget_ + w*(theta*S2 + (1 - theta)*S1));
+        const bool JRes = residual_.J.size();
+        for (const label i : *edgePoints)
+        {
+            residual_.momentum[i] *= theta;
+            residual_.F[i] *= theta;
+            if (JRes)
+            {
+                residual_.J[i] *= theta;
+            }
+        }
+        for (const label e : *edges)
+        {
+            firstOrderFlux(e, tC, vCA, dS);
+            addFlux(e, (1 - theta)*tC, (1 - theta)*vCA, (1 - theta)*dS);
+        }
+        ++nEnergyLimited_;
+        minEnergyTheta_ = min(minEnergyTheta_, theta);
+        return;
+    }
+    else if (scheme_->secondOrder())
     {
         const label nEdges = es.size();
         forAll(es, e)
@@ -1068,7 +1174,11 @@ void Foam::solidBody::addInteriorFluxes(const Traction& traction)
 }
 
 
-void Foam::solidBody::addBoundaryFluxes(const scalar t)
+void Foam::solidBody::addBoundaryFluxes
+(
+    const scalar t,
+    const labelUList* points
+)
 {
     const List<tensor>& H = Hc();
     const materialModel& m = material_();
@@ -1084,7 +1194,8 @@ void Foam::solidBody::addBoundaryFluxes(const scalar t)
             u_, q_, H, body, t, residual_.momentum, residual_.F,
             residual_.boundaryTraction[patchi],
             residual_.boundaryVelocity[patchi],
-            deformedDual(patchi).get()
+            deformedDual(patchi).get(),
+            points
         );
         residual_.boundarySet[patchi] = true;
     }
@@ -1112,7 +1223,12 @@ void Foam::solidBody::finishResiduals()
 }
 
 
-void Foam::solidBody::rkStage(const scalar dt, const scalar a)
+void Foam::solidBody::rkStage
+(
+    const scalar dt,
+    const scalar a,
+    const labelUList* points
+)
 {
     stateChanged();
     const scalarField& V = dual_.volumes();
@@ -1130,7 +1246,7 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
 
     const bool HLaw = scheme_->HLaw();
     const bool JLaw = scheme_->JLaw();
-    forAll(lm_, i)
+    forEachPoint(lm_.size(), points, [&](const label i)
     {
         const scalar invV = 1.0/V[i];
         const tensor Drate(invV*residual_.F[i]);
@@ -1149,14 +1265,18 @@ void Foam::solidBody::rkStage(const scalar dt, const scalar a)
         lm_[i] = a*lm0_[i] + b*(lm_[i] + dt*(invV*residual_.momentum[i] + rhoB));
         u_[i] = a*u0_[i] + b*(u_[i] + dt*fluxVelocity(q_[i]));
         F_[i] = a*F0_[i] + b*(F_[i] + dt*Drate);
-    }
+    });
 
     forAll(residual_.surfacePoints, k)
     {
         u_[residual_.surfacePoints[k]] = uSurface[k];
     }
 
-    Wext_ = a*Wext0_ + b*(Wext_ + dt*residual_.power);
+    // (multirate stepping integrates the external work itself)
+    if (!points)
+    {
+        Wext_ = a*Wext0_ + b*(Wext_ + dt*residual_.power);
+    }
 }
 
 
@@ -1262,7 +1382,7 @@ void Foam::solidBody::relaxStep(const scalar gamma)
 }
 
 
-void Foam::solidBody::applyConstraints()
+void Foam::solidBody::applyConstraints(const UList<bool>* active)
 {
     stateChanged();
     // A closed contact point's normal stays on the deformed surface
@@ -1273,25 +1393,36 @@ void Foam::solidBody::applyConstraints()
     {
         contactRotation_->apply(u_, F_, scheme_->HLaw() ? &H_ : nullptr);
     }
-    symmetry_->apply(lm_, u_);
+    symmetry_->apply(lm_, u_, active);
     // A point on a symmetry plane stands for its control volume completed
     // by the mirror image, which does not rotate about the plane's axes
     // (symmetryConstraint.H)
-    symmetry_->removePlaneRotation(F_);
+    symmetry_->removePlaneRotation(F_, active);
     if (scheme_->HLaw())
     {
-        symmetry_->removePlaneRotation(H_);
+        symmetry_->removePlaneRotation(H_, active);
     }
-    planeStrain_->apply(dual_.volumes(), lm_, u_);
+    planeStrain_->apply(dual_.volumes(), lm_, u_, active);
 }
 
 
-void Foam::solidBody::endStep()
+void Foam::solidBody::endStep(const labelUList* points)
 {
     if (material_->plastic())
     {
         stateChanged();
-        material_->updateState(F_, Jc(), dDplastic_);
+        material_->updateState(F_, Jc(), dDplastic_, points);
+        if (points)
+        {
+            // (serial: multirate stepping runs on one processor)
+            scalar dD = 0;
+            for (const label i : *points)
+            {
+                dD += dDplastic_[i]*dual_.volumes()[i];
+            }
+            Dplastic_ += dD;
+            return;
+        }
         forAll(dDplastic_, i)
         {
             dDplastic_[i] *= dual_.volumes()[i];

@@ -30,7 +30,8 @@ const Foam::word& Foam::solverTime::checkControlDict(const argList& args)
         dict,
         {
             "application", "startFrom", "startTime", "stopAt", "endTime",
-            "deltaT", "writeControl", "writeInterval", "cfl", "writeFormat",
+            "deltaT", "writeControl", "writeInterval", "cfl", "multirateLevels",
+            "writeFormat",
             "writePrecision", "writeCompression", "timeFormat",
             "timePrecision", "runTimeModifiable", "purgeWrite",
             "DebugSwitches", "InfoSwitches", "OptimisationSwitches"
@@ -106,6 +107,17 @@ const Foam::word& Foam::solverTime::checkControlDict(const argList& args)
         FatalIOErrorInFunction(dict)
             << "Keyword 'cfl' = " << cfl << " in " << file
             << " must be in (0, 2]" << exit(FatalIOError);
+    }
+
+    const label levels = dict.getOrDefault<label>("multirateLevels", 1);
+    if (levels < 1 || levels > maxMultirateLevels)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'multirateLevels' = " << levels << " in " << file
+            << " must be an integer from 1 (one global step) to "
+            << maxMultirateLevels << " (steps down to 1/"
+            << (label(1) << (maxMultirateLevels - 1)) << " of the largest)"
+            << exit(FatalIOError);
     }
 
     return controlDictName;
@@ -250,6 +262,7 @@ Foam::solverTime::solverTime(const argList& args)
     Time(checkControlDict(args), args),
     restart_(false),
     cfl_(controlDict().getOrDefault<scalar>("cfl", 0.9)),
+    multirateLevels_(controlDict().getOrDefault<label>("multirateLevels", 1)),
     firstStart_(controlDict().getOrDefault<scalar>("startTime", 0)),
     writesBeforeStart_(-1)
 {

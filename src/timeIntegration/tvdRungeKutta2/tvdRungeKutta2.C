@@ -64,6 +64,9 @@ void residuals
 }
 
 
+} // End anonymous namespace
+
+
 // The factor gamma <= 1 of the step's increment that keeps the numerical
 // dissipation of every checking body from falling (doc/method.md, section
 // 5): f(gamma) = E(U^n + gamma dU) - E^n - gamma dWext is convex with
@@ -71,14 +74,13 @@ void residuals
 // excess[b]: the energy a body's step would still create that is mostly
 // the combination's (alpha <= beta) but has no usable root, because the
 // stages' fluxes dissipate next to nothing (alpha ~ 0; 0: none)
-Foam::scalar stepRelaxation
+Foam::scalar Foam::tvdRungeKutta2::stepRelaxation
 (
-    const Foam::PtrList<Foam::solidBody>& bodies,
-    Foam::scalarList& excess
+    const PtrList<solidBody>& bodies,
+    const boolList& check,
+    scalarList& excess
 )
 {
-    using namespace Foam;
-
     scalar scale = 0;
     for (const solidBody& b : bodies)
     {
@@ -92,7 +94,7 @@ Foam::scalar stepRelaxation
     forAll(bodies, bi)
     {
         const solidBody& b = bodies[bi];
-        if (!b.checksStepEnergy())
+        if (!check[bi])
         {
             continue;
         }
@@ -143,8 +145,6 @@ Foam::scalar stepRelaxation
     return gamma;
 }
 
-} // End anonymous namespace
-
 
 Foam::label Foam::tvdRungeKutta2::step
 (
@@ -192,6 +192,11 @@ Foam::label Foam::tvdRungeKutta2::step
     // dissipate the excess (one and a half times it, up to three tries)
     scalarList excess;
     scalarList required(bodies.size(), 0.0);
+    boolList check(bodies.size());
+    forAll(bodies, b)
+    {
+        check[b] = bodies[b].checksStepEnergy();
+    }
     for (label attempt = 0; ; ++attempt)
     {
         residuals(bodies, contacts, t);
@@ -207,7 +212,7 @@ Foam::label Foam::tvdRungeKutta2::step
             return failed;
         }
 
-        const scalar gamma = stepRelaxation(bodies, excess);
+        const scalar gamma = stepRelaxation(bodies, check, excess);
         const bool retry = (attempt < 3 && max(excess) > 0);
         if (!retry)
         {

@@ -1,12 +1,13 @@
 // One bar of the bar-impact benchmarks (doc/benchmarks.md, part A): a box
 // [x0, x0+L] x [-W/2, W/2]^2 of structured tetrahedra (each hex cell split in
-// six; hex = 1: hexahedra), nx cells along the bar and ny across.  Patches:
+// six; hex = 1: hexahedra), nx cells along the bar and ny across (bump < 1:
+// cells graded along the bar, finer towards both ends, gmsh's Bump).  Patches:
 //   contact  the end facing the other bar (contactEnd = 1: at x0+L, else x0)
 //   end      the other end
 //   sides    the four lateral faces
 // Set parameters with  gmsh -setnumber nx 160 ...
 DefineConstant[ x0 = 0, L = 10, W = 1, nx = 80, ny = 2, contactEnd = 1,
-                hex = 0 ];
+                hex = 0, bump = 1 ];
 
 SetFactory("OpenCASCADE");
 Box(1) = {x0, -W/2, -W/2, L, W, W};
@@ -14,7 +15,9 @@ Box(1) = {x0, -W/2, -W/2, L, W, W};
 curves[] = Curve{:};
 For i In {0 : #curves[] - 1}
     bb[] = BoundingBox Curve{curves[i]};
-    If (bb[3] - bb[0] > L/2)
+    If (bb[3] - bb[0] > L/2 && bump != 1)
+        Transfinite Curve{curves[i]} = nx + 1 Using Bump bump;
+    ElseIf (bb[3] - bb[0] > L/2)
         Transfinite Curve{curves[i]} = nx + 1;
     Else
         Transfinite Curve{curves[i]} = ny + 1;

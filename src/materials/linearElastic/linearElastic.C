@@ -33,6 +33,7 @@ void Foam::materialModels::linearElastic::stress
 ) const
 {
     forEachPoint(F.size(), points, [&](const label i)
+    __attribute__((always_inline))
     {
         const tensor& f = F[i];
         const scalar trF = tr(f);

@@ -44,6 +44,7 @@ void Foam::materialModels::mooneyRivlin::stress
 ) const
 {
     forEachPoint(F.size(), points, [&](const label i)
+    __attribute__((always_inline))
     {
         // Isochoric part from F and H (through det F), volumetric part
         // from the conserved J

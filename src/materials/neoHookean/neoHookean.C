@@ -33,6 +33,7 @@ void Foam::materialModels::neoHookean::stress
 ) const
 {
     forEachPoint(F.size(), points, [&](const label i)
+    __attribute__((always_inline))
     {
         // Isochoric part from F (through det F = H:F/3), volumetric part
         // from the conserved J (see the class description)

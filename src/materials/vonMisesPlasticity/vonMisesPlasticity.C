@@ -216,6 +216,7 @@ void Foam::materialModels::vonMisesPlasticity::stress
     scalar dgamma, Jp;
 
     forEachPoint(F.size(), points, [&](const label i)
+    __attribute__((always_inline))
     {
         returnMap(F[i], J[i], CpInv_[i], epsP_[i], e, dgamma, Jp);
 
@@ -344,6 +345,7 @@ void Foam::materialModels::vonMisesPlasticity::updateState
     // F): the stress of the state is unchanged by it, since its trial
     // state is now the returned one
     forEachPoint(F.size(), points, [&](const label i)
+    __attribute__((always_inline))
     {
         dD[i] = 0;
         if (returnedEpsP_[i] > epsP_[i])

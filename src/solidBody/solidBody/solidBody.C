@@ -506,6 +506,21 @@ void Foam::solidBody::storeState()
 }
 
 
+void Foam::solidBody::storeState(const labelUList& points)
+{
+    const bool HLaw = scheme_->HLaw();
+    const bool JLaw = scheme_->JLaw();
+    for (const label i : points)
+    {
+        lm0_[i] = lm_[i];
+        u0_[i] = u_[i];
+        F0_[i] = F_[i];
+        if (HLaw) H0_[i] = H_[i];
+        if (JLaw) J0_[i] = J_[i];
+    }
+}
+
+
 void Foam::solidBody::restoreState()
 {
     stateChanged();

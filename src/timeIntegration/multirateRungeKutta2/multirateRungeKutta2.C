@@ -90,7 +90,6 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
         L.edges.setSize(nLevels_);
         L.finerEdges.setSize(nLevels_);
         L.gradient1.setSize(nLevels_);
-        L.gradient2.setSize(nLevels_);
         L.coarser.setSize(nLevels_);
         L.edgePoints.setSize(nLevels_);
         L.onLevel.setSize(nLevels_);
@@ -204,15 +203,16 @@ void Foam::multirateRungeKutta2::setLevels
         L.edges[l].clear();
         L.finerEdges[l].clear();
         L.gradient1[l].clear();
-        L.gradient2[l].clear();
         L.coarser[l].clear();
         L.onLevel[l] = false;
     }
+    L.finest = 0;
     forAll(level, i)
     {
         L.points[level[i]].append(i);
         L.onLevel[level[i]][i] = true;
         ++pointsPerLevel_[level[i]];
+        L.finest = max(L.finest, level[i]);
     }
     forAll(es, e)
     {
@@ -226,8 +226,8 @@ void Foam::multirateRungeKutta2::setLevels
     }
 
     // Gradients: stage 1 of level l at t, which every finer level shares,
-    // needs them at its points and at the finer ends of its finer edges;
-    // stage 2 at its own points.  Coarser neighbours: the points of level
+    // needs them at its points and at the finer ends of its finer edges
+    // (stage 2 at its own points only).  Coarser neighbours: the points of level
     // l - 1 at the coarse ends of the level's edges.  (listed marks each
     // point once; cleared after)
     boolList& mark = L.listed;
@@ -236,7 +236,6 @@ void Foam::multirateRungeKutta2::setLevels
         for (const label i : L.points[l])
         {
             L.gradient1[l].append(i);
-            L.gradient2[l].append(i);
             mark[i] = true;
         }
         for (const label e : L.finerEdges[l])
@@ -398,20 +397,14 @@ bool Foam::multirateRungeKutta2::advance
     const DynamicList<label>& P = L.points[l];
     const UList<bool>& on = L.onLevel[l];
     stageResidual& R = b.residual_;
-    const bool HLaw = b.scheme_->HLaw();
-    const bool JLaw = b.scheme_->JLaw();
     const bool RJ = R.J.size();
     const scalar halfh = 0.5*h;
 
     // Stage 1 at t
     interpolateCoarser(b, L, l, t, tc, hc);
+    b.storeState(P);
     for (const label i : P)
     {
-        b.lm0_[i] = b.lm_[i];
-        b.u0_[i] = b.u_[i];
-        b.F0_[i] = b.F_[i];
-        if (HLaw) b.H0_[i] = b.H_[i];
-        if (JLaw) b.J0_[i] = b.J_[i];
         L.qStart[i] = b.q_[i];
     }
     resetResiduals(b, L, l);
@@ -449,12 +442,7 @@ bool Foam::multirateRungeKutta2::advance
     lastUpdates_ += P.size();
 
     // The finer levels: two steps each
-    label finest = l;
-    for (label k = l + 1; k < nLevels_; ++k)
-    {
-        if (L.points[k].size()) finest = k;
-    }
-    if (finest > l)
+    if (L.finest > l)
     {
         if
         (
@@ -474,7 +462,7 @@ bool Foam::multirateRungeKutta2::advance
     }
     interpolateCoarser(b, L, l, t + h, tc, hc);
     resetResiduals(b, L, l);
-    gradients(b, L, L.gradient2[l]);
+    gradients(b, L, P);
     ownEdgeFluxes(b, L, l, halfh);
     b.addBoundaryFluxes(t + h, &P);
     // U^n+1 = U^n + h/2 (R1 + R2) over the level's edges, plus the finer
@@ -573,18 +561,13 @@ Foam::label Foam::multirateRungeKutta2::step
         b.Wext0_ = L.Wext;
         b.stepEnergy0_ = E;
     };
-    auto restore = [](solidBody& b, bodyLevels& L)
+    // (restoreState() goes back to the step-start copies)
+    auto restore = [&startOfStep](solidBody& b, bodyLevels& L)
     {
-        b.lm_ = L.lm;
-        b.u_ = L.u;
-        b.F_ = L.F;
-        if (b.scheme_->HLaw()) b.H_ = L.H;
-        if (b.scheme_->JLaw()) b.J_ = L.J;
-        b.Wext_ = L.Wext;
+        startOfStep(b, L, 0);
         b.Dplastic_ = L.Dplastic;
         b.material_->restoreSavedState();
-        b.updateConstitutive();
-        b.storeState();
+        b.restoreState();
     };
 
     forAll(bodies, bi)

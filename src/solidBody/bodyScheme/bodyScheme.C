@@ -449,7 +449,8 @@ void Foam::bodyScheme::chooseFromScene
     // A plane-wave impact: the upwind F flux, with van Albada (Barth-
     // Jespersen's per-component clipping sends a precursor ahead of the
     // release wave that the face multiplies, superbee's sharper release
-    // front leaves tension there) and the incoming waves' boundary slopes
+    // front leaves tension there; simpleWaveSuperbee, given by hand, is
+    // made for it) and the incoming waves' boundary slopes
     // (without them a struck point's Green-Gauss slope hides the jump).
     // The bar tutorials' hand-made choice: doc/results.md, "Plane-wave
     // impacts".  Only with van Albada: not with another limiter given
@@ -458,7 +459,8 @@ void Foam::bodyScheme::chooseFromScene
     // instead of -875, and at c its step collapsed after the release)
     // (first order: no limiter to speak of)
     const bool limiterSuitsUpwindF =
-        !secondOrder_ || automatic("limiter") || limiter_ == "vanAlbada";
+        !secondOrder_ || automatic("limiter") || limiter_ == "vanAlbada"
+     || limiter_ == "simpleWaveSuperbee";
     if (FStabFromScene_ && planeWave && !limiterSuitsUpwindF)
     {
         setChoice

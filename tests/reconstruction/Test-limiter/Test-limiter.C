@@ -18,6 +18,10 @@ Description
         smaller than van Albada's (it is the upper edge of the TVD region),
         and larger on a good part of the edges; monotonizedCentral's lie
         between the two (and its states between f_i and f_j);
+      - simpleWaveSuperbee: superbee's midpoint states on every edge
+        across one simple wave (every component the same profile along a
+        direction), van Albada's on a good part of the edges where a second
+        wave crosses it, and no other states;
       - vanAlbada on a field with a smooth maximum (a paraboloid): only
         edges near the maximum are limited, by less than the
         Barth-Jespersen limiter.
@@ -154,7 +158,10 @@ int main(int argc, char *argv[])
     for
     (
         const word type
-      : {"barthJespersen", "vanAlbada", "monotonizedCentral", "superbee"}
+      : {
+            "barthJespersen", "vanAlbada", "monotonizedCentral", "superbee",
+            "simpleWaveSuperbee"
+        }
     )
     {
         autoPtr<limiter> lim(limiter::New(type, dictionary()));
@@ -381,6 +388,90 @@ int main(int argc, char *argv[])
             << errNone/n << ", 0.25 x first order " << errFirst/n
             << "); Barth-Jespersen " << errBJ/n << endl;
         nFailed += !ok;
+    }
+
+    // simpleWaveSuperbee: across one simple wave (every component the same
+    // profile along k1 times its own amplitude) every edge takes superbee's
+    // states; where a second wave along k2 crosses it (other amplitudes),
+    // a good part of the edges take van Albada's, and no edge anything else
+    {
+        autoPtr<limiter> sw(limiter::New("simpleWaveSuperbee", dictionary()));
+        const point X0(0.5*(max(X) + min(X)));
+        const scalar width = 0.1*mag(max(X) - min(X));
+        const vector k1(vector(1, 0.3, 0.2)/mag(vector(1, 0.3, 0.2)));
+        const vector k2(vector(-0.2, 1, 0.4)/mag(vector(-0.2, 1, 0.4)));
+        Random rnd(7);
+        fluxState A, B;
+        for (direction c = 0; c < nFluxComponents; ++c)
+        {
+            A[c] = 0.5 + rnd.sample01<scalar>();
+            B[c] = (c % 2 ? 1 : -1)*(0.5 + rnd.sample01<scalar>());
+        }
+        for (const bool crossing : {false, true})
+        {
+            forAll(q, i)
+            {
+                const scalar s1 = ((X[i] - X0) & k1)/width;
+                const scalar s2 = ((X[i] - X0) & k2)/width;
+                for (direction c = 0; c < nFluxComponents; ++c)
+                {
+                    q[i][c] =
+                        A[c]*Foam::tanh(s1)
+                      + (crossing ? B[c]*Foam::tanh(s2) : 0);
+                }
+            }
+            greenGaussGradient(dual, q, G);
+
+            // Edges (sides) whose states are superbee's, van Albada's and
+            // not superbee's, or neither's
+            label likeSB = 0, onlyVA = 0, neither = 0;
+            fluxState qL, qR, qLs, qRs, qLv, qRv;
+            auto same = [](const fluxState& x, const fluxState& y)
+            {
+                for (direction c = 0; c < nFluxComponents; ++c)
+                {
+                    if (mag(x[c] - y[c]) > 1e-12*(1 + mag(y[c])))
+                    {
+                        return false;
+                    }
+                }
+                return true;
+            };
+            forAll(es, e)
+            {
+                const label i = es[e], j = ee[e];
+                const vector halfdX(0.5*(X[j] - X[i]));
+                sw->midpointStates(q[i], q[j], G[i], G[j], halfdX, qL, qR);
+                sb->midpointStates(q[i], q[j], G[i], G[j], halfdX, qLs, qRs);
+                va->midpointStates(q[i], q[j], G[i], G[j], halfdX, qLv, qRv);
+                for (const bool left : {true, false})
+                {
+                    const fluxState& x = left ? qL : qR;
+                    if (same(x, left ? qLs : qRs))
+                    {
+                        ++likeSB;
+                    }
+                    else if (same(x, left ? qLv : qRv))
+                    {
+                        ++onlyVA;
+                    }
+                    else
+                    {
+                        ++neither;
+                    }
+                }
+            }
+            const label n = 2*es.size();
+            const bool ok =
+                neither == 0
+             && (crossing ? onlyVA > n/20 : onlyVA == 0);
+            Info<< (ok ? "PASS" : "FAIL") << " simpleWaveSuperbee, "
+                << (crossing ? "two crossing waves" : "one simple wave")
+                << ": edge sides like superbee " << likeSB
+                << ", like van Albada only " << onlyVA << ", neither "
+                << neither << " (of " << n << ")" << endl;
+            nFailed += !ok;
+        }
     }
 
     Info<< nl << (nFailed ? "FAILED" : "All checks passed") << endl;

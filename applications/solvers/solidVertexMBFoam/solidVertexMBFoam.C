@@ -226,6 +226,10 @@ int main(int argc, char *argv[])
             Info<< " (smallest second-order weight "
                 << b.minEnergyBlending() << ")" << nl;
         }
+        for (const solidBoundaryCondition& bc : b.boundaryConditions())
+        {
+            bc.writeSummary(Info, b.name());
+        }
         if (b.scheme().contactRotation() && b.contactRotations().anyPoints())
         {
             Info<< "Body " << b.name() << ": contactRotation turned the F"

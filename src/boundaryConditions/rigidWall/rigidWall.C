@@ -31,8 +31,19 @@ Foam::solidBoundaryConditions::rigidWall::rigidWall
     normal_(getFinite<vector>(dict, "normal")),
     velocity_(getFiniteOrDefault<vector>(dict, "velocity", Zero)),
     friction_(frictionLaw::New(dict, "patch '" + patchName() + "'")),
-    hugoniot_(true)
+    hugoniot_(true),
+    touch_(0),
+    maxDepth_(0)
 {
+    {
+        const scalarField l(dual.lengths());
+        scalar lMin = GREAT;
+        for (const label i : dual.subFaces(patchi).point)
+        {
+            lMin = min(lMin, l[i]);
+        }
+        touch_ = 1e-6*returnReduce(lMin, minOp<scalar>());
+    }
     const word solver(dict.getOrDefault<word>("riemannSolver", "hugoniot"));
     if (solver == "acoustic")
     {
@@ -86,7 +97,7 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
     );
     const scalar tnTrial = (tL & nc) + w.Zp*dvn - shockTerm;
 
-    if (gap > 0 || tnTrial >= 0)
+    if (gap > touch_ || tnTrial >= 0)
     {
         // Open gap or tension: traction-free
         tC = Zero;
@@ -119,6 +130,47 @@ void Foam::solidBoundaryConditions::rigidWall::contactState
         acousticFormulas::mixedState(tL, v, vWallN, ttC, nc, w.Zp, w.Zs, tC, vC);
         tC -= shockTerm*nc;
     }
+}
+
+
+void Foam::solidBoundaryConditions::rigidWall::prescribeDisplacements
+(
+    const UList<vector>& u,
+    const scalar t,
+    stageResidual& R,
+    const labelUList* points
+) const
+{
+    const pointField& X = dual_.mesh().points();
+    const point wallPoint(point_ + t*velocity_);
+    followStates
+    (
+        R, points,
+        [&](const label i)
+        {
+            const scalar gap = (X[i] + u[i] - wallPoint) & normal_;
+            maxDepth_ = max(maxDepth_, -gap);
+            return gap <= touch_;
+        },
+        [&](const label k)
+        {
+            return (stateT_[k] & normal_) > 0;
+        }
+    );
+}
+
+
+void Foam::solidBoundaryConditions::rigidWall::writeSummary
+(
+    Ostream& os,
+    const word& body
+) const
+{
+    const scalar depth = returnReduce(maxDepth_, maxOp<scalar>());
+    os  << "Body " << body << ", wall " << patchName()
+        << ": largest depth behind the wall "
+        << depth << " (" << depth*1e-6/touch_
+        << " of the patch's shortest edge)" << nl;
 }
 
 

@@ -1224,6 +1224,7 @@ void Foam::solidBody::addBoundaryFluxes
             deformedDual(patchi).get(),
             points
         );
+        bc.prescribeDisplacements(u_, t, residual_, points);
         residual_.boundarySet[patchi] = true;
     }
 

@@ -121,5 +121,16 @@ def run_statistics(case='.'):
     return out
 
 
+def wall_depths(log='log.solidVertexMBFoam'):
+    """Each rigid wall's largest depth of a point behind it, in the patch's
+    shortest edges, as the solver's log ends with it (a list, one per wall
+    of every body; empty without walls or log)."""
+    if not os.path.isfile(log):
+        return []
+    return [float(d) for d in re.findall(
+        r"largest depth behind the wall \S+ \((\S+) of the patch's "
+        r"shortest edge\)", open(log).read())]
+
+
 def read_csv(path):
     return np.genfromtxt(path, delimiter=',', names=True)

@@ -368,12 +368,9 @@ def main():
 
     # Rigid walls: the largest depth of a touching point behind the wall, in
     # the patch's shortest edges, from the solver's log (this run's)
-    if os.path.isfile('log.solidVertexMBFoam'):
-        depths = re.findall(r'largest depth behind the wall \S+ \((\S+) of '
-                            r"the patch's shortest edge\)",
-                            open('log.solidVertexMBFoam').read())
-        if depths:
-            summary['maxWallDepth'] = max(float(d) for d in depths)
+    depths = svmbPost.wall_depths()
+    if depths:
+        summary['maxWallDepth'] = max(depths)
 
     # Momentum of all bodies together (conserved without walls and gravity)
     P = sum(np.column_stack([d['px'], d['py'], d['pz']])[:n] for d in data)

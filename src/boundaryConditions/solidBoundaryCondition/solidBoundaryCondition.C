@@ -5,6 +5,7 @@
 
 #include "solidBoundaryCondition.H"
 #include "checkedInput.H"
+#include "UIndirectList.H"
 
 namespace Foam
 {
@@ -190,6 +191,74 @@ Foam::scalar Foam::solidBoundaryCondition::addSubFaceFlux
 }
 
 
+void Foam::solidBoundaryCondition::subFaceRows
+(
+    const labelUList& rowOf,
+    const label nRows,
+    labelList& start,
+    labelList& items
+) const
+{
+    const labelList& sfPoint = dual_.subFaces(patchi_).point;
+    start.setSize(nRows + 1);
+    start = 0;
+    for (const label i : sfPoint)
+    {
+        ++start[rowOf[i] + 1];
+    }
+    for (label r = 0; r < nRows; ++r)
+    {
+        start[r + 1] += start[r];
+    }
+    items.setSize(sfPoint.size());
+    labelList next(SubList<label>(start, nRows));
+    forAll(sfPoint, s)
+    {
+        items[next[rowOf[sfPoint[s]]]++] = s;
+    }
+}
+
+
+void Foam::solidBoundaryCondition::makePatchPointRows() const
+{
+    const polyMesh& mesh = dual_.mesh();
+    const labelList& sfPoint = dual_.subFaces(patchi_).point;
+
+    // The patch's points; in parallel also those this processor holds
+    // without any of their patch faces (its cells touch them by an edge or
+    // a corner only): their copies must move as the others
+    labelList rowOf(mesh.nPoints(), -1);
+    DynamicList<label> pts(sfPoint.size());
+    auto add = [&](const label i)
+    {
+        if (rowOf[i] < 0)
+        {
+            rowOf[i] = pts.size();
+            pts.append(i);
+        }
+    };
+    for (const label i : sfPoint)
+    {
+        add(i);
+    }
+    if (Pstream::parRun())
+    {
+        boolList onPatch(mesh.nPoints(), false);
+        UIndirectList<bool>(onPatch, sfPoint) = true;
+        syncTools::syncPointList(mesh, onPatch, orEqOp<bool>(), false);
+        forAll(onPatch, i)
+        {
+            if (onPatch[i])
+            {
+                add(i);
+            }
+        }
+    }
+    subFaceRows(rowOf, pts.size(), patchPointSubFaceStart_, patchPointSubFaces_);
+    patchPoints_.transfer(pts);
+}
+
+
 Foam::scalar Foam::solidBoundaryCondition::addFluxes
 (
     const UList<vector>& u,
@@ -214,22 +283,12 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         // state solved once, when a sub-face first needs it
         if (pointSubFaceStart_.empty())
         {
-            const label nPoints = dual_.mesh().nPoints();
-            pointSubFaceStart_.setSize(nPoints + 1, 0);
-            for (const label i : sf.point)
-            {
-                ++pointSubFaceStart_[i + 1];
-            }
-            for (label i = 0; i < nPoints; ++i)
-            {
-                pointSubFaceStart_[i + 1] += pointSubFaceStart_[i];
-            }
-            pointSubFaces_.setSize(sf.size());
-            labelList next(SubList<label>(pointSubFaceStart_, nPoints));
-            forAll(sf.point, s)
-            {
-                pointSubFaces_[next[sf.point[s]]++] = s;
-            }
+            // (rows by mesh point)
+            subFaceRows
+            (
+                identity(dual_.mesh().nPoints()), dual_.mesh().nPoints(),
+                pointSubFaceStart_, pointSubFaces_
+            );
             stateStage_.setSize(statePoint_.size(), -1);
         }
         ++stage_;

@@ -118,6 +118,7 @@ void Foam::solidBoundaryCondition::solveState
     const UList<tensor>& H,
     const waveData& body,
     const scalar t,
+    const stageStep& step,
     const deformedDual* deformed
 ) const
 {
@@ -138,12 +139,12 @@ void Foam::solidBoundaryCondition::solveState
     const scalar Lambda = mag(n);
     n /= Lambda;
     const waveData w{body.Zp, body.Zs, body.shockMass*Lambda};
-    contactState
+    const point& X = dual_.mesh().points()[i];
+    stateP_[k] = contactState
     (
-        n, N, dual_.mesh().points()[i] + u[i], fluxVelocity(q[i]), tL,
-        w, t, stateT_[k], stateV_[k]
+        n, N, X + u[i], X + step.u0[i], fluxVelocity(q[i]), tL,
+        w, t, step, stateT_[k], stateV_[k]
     );
-    stateP_[k] = stateT_[k] & stateV_[k];
 }
 
 
@@ -266,6 +267,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     const UList<tensor>& H,
     const waveData& body,
     const scalar t,
+    const stageStep& step,
     UList<vector>& Rp,
     UList<tensor>& RF,
     UList<vector>& tB,
@@ -297,7 +299,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
             if (stateStage_[k] != stage_)
             {
                 stateStage_[k] = stage_;
-                solveState(k, u, q, H, body, t, nullptr);
+                solveState(k, u, q, H, body, t, step, nullptr);
             }
         };
         for (const label i : *points)
@@ -330,7 +332,7 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     // The one-sided Riemann state of every distinct (point, normal) pair
     forAll(statePoint_, k)
     {
-        solveState(k, u, q, H, body, t, deformed);
+        solveState(k, u, q, H, body, t, step, deformed);
     }
     forAll(sf.point, s)
     {

@@ -28,15 +28,17 @@ Foam::solidBoundaryConditions::symmetry::symmetry
 {}
 
 
-void Foam::solidBoundaryConditions::symmetry::contactState
+Foam::scalar Foam::solidBoundaryConditions::symmetry::contactState
 (
     const vector& n,
     const vector& N,
     const point& x,
+    const point& x0,
     const vector& v,
     const vector& tL,
     const waveData& w,
     const scalar t,
+    const stageStep& step,
     vector& tC,
     vector& vC
 ) const
@@ -44,6 +46,7 @@ void Foam::solidBoundaryConditions::symmetry::contactState
     // The plane's own normal (the reference one): the deformed normal may
     // tilt, and its normal reaction would then push along the plane
     acousticFormulas::mixedState(tL, v, 0, Zero, N, w.Zp, w.Zs, tC, vC);
+    return tC & vC;
 }
 
 

@@ -41,21 +41,24 @@ Foam::solidBoundaryConditions::traction::traction
 }
 
 
-void Foam::solidBoundaryConditions::traction::contactState
+Foam::scalar Foam::solidBoundaryConditions::traction::contactState
 (
     const vector& n,
     const vector& N,
     const point& x,
+    const point& x0,
     const vector& v,
     const vector& tL,
     const waveData& w,
     const scalar t,
+    const stageStep& step,
     vector& tC,
     vector& vC
 ) const
 {
     tC = traction_->value(t);
     vC = acousticFormulas::tractionVelocity(tL, v, tC, n, w.Zp, w.Zs);
+    return tC & vC;
 }
 
 

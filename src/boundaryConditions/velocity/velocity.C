@@ -33,21 +33,24 @@ Foam::solidBoundaryConditions::velocity::velocity
 }
 
 
-void Foam::solidBoundaryConditions::velocity::contactState
+Foam::scalar Foam::solidBoundaryConditions::velocity::contactState
 (
     const vector& n,
     const vector& N,
     const point& x,
+    const point& x0,
     const vector& v,
     const vector& tL,
     const waveData& w,
     const scalar t,
+    const stageStep& step,
     vector& tC,
     vector& vC
 ) const
 {
     vC = velocity_->value(t);
     tC = acousticFormulas::velocityTraction(tL, v, vC, n, w.Zp, w.Zs);
+    return tC & vC;
 }
 
 

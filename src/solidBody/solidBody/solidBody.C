@@ -1204,9 +1204,13 @@ void Foam::solidBody::addInteriorFluxes
 void Foam::solidBody::addBoundaryFluxes
 (
     const scalar t,
+    const scalar h,
+    const bool second,
     const labelUList* points
 )
 {
+    // (u0_: the start of the step, stored by storeState)
+    const solidBoundaryCondition::stageStep step{u0_, h, second};
     const List<tensor>& H = Hc();
     const materialModel& m = material_();
     const solidBoundaryCondition::waveData body
@@ -1218,13 +1222,13 @@ void Foam::solidBody::addBoundaryFluxes
         const label patchi = bc.patchi();
         residual_.power += bc.addFluxes
         (
-            u_, q_, H, body, t, residual_.momentum, residual_.F,
+            u_, q_, H, body, t, step, residual_.momentum, residual_.F,
             residual_.boundaryTraction[patchi],
             residual_.boundaryVelocity[patchi],
             deformedDual(patchi).get(),
             points
         );
-        bc.prescribeDisplacements(u_, t, residual_, points);
+        bc.prescribeDisplacements(u_, q_, t, step, residual_, points);
         residual_.boundarySet[patchi] = true;
     }
 

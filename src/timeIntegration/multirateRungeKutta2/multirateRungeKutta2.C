@@ -427,7 +427,7 @@ bool Foam::multirateRungeKutta2::advance
         L.AF[i] = -halfh*(R.F[i] - L.AF[i]);
         L.AJ[i] = RJ ? -halfh*(R.J[i] - L.AJ[i]) : 0;
     }
-    b.addBoundaryFluxes(t, &P);
+    b.addBoundaryFluxes(t, h, false, &P);
     const scalar P1 = power(b, L, l);
     b.rkStage(h, 0, &P);
     b.applyConstraints(&on);
@@ -464,7 +464,7 @@ bool Foam::multirateRungeKutta2::advance
     resetResiduals(b, L, l);
     gradients(b, L, P);
     ownEdgeFluxes(b, L, l, halfh);
-    b.addBoundaryFluxes(t + h, &P);
+    b.addBoundaryFluxes(t + h, h, true, &P);
     // U^n+1 = U^n + h/2 (R1 + R2) over the level's edges, plus the finer
     // edges' integral: the stage-2 form 1/2 (U^n + U* + h R) with R2
     // completed by 2/h A

@@ -31,12 +31,15 @@ Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
 namespace
 {
 
-// The residuals of all bodies at time t, in the order of doc/stage.md
+// The residuals of all bodies at time t, in the order of doc/stage.md,
+// for the first stage of a step of dt or (second) its second, at its end
 void residuals
 (
     Foam::PtrList<Foam::solidBody>& bodies,
     Foam::PtrList<Foam::contactPair>& contacts,
-    const Foam::scalar t
+    const Foam::scalar t,
+    const Foam::scalar dt,
+    const bool second
 )
 {
     for (Foam::solidBody& b : bodies)
@@ -47,7 +50,7 @@ void residuals
     // boundary values of the interior reconstruction (greenGauss.H)
     for (Foam::solidBody& b : bodies)
     {
-        b.addBoundaryFluxes(t);
+        b.addBoundaryFluxes(t, dt, second);
     }
     for (Foam::contactPair& c : contacts)
     {
@@ -199,13 +202,13 @@ Foam::label Foam::tvdRungeKutta2::step
     }
     for (label attempt = 0; ; ++attempt)
     {
-        residuals(bodies, contacts, t);
+        residuals(bodies, contacts, t, dt, false);
         label failed = updateAll([dt](solidBody& b){ b.rkStage(dt, 0); });
         if (failed >= 0)
         {
             return failed;
         }
-        residuals(bodies, contacts, t + dt);
+        residuals(bodies, contacts, t + dt, dt, true);
         failed = updateAll([dt](solidBody& b){ b.rkStage(dt, 0.5); });
         if (failed >= 0)
         {

@@ -1165,9 +1165,11 @@ bool Foam::contactPair::pairState
     const pointData& b,
     vector& tC,
     vector& vCA,
-    vector& vCB
+    vector& vCB,
+    scalar& closingPower
 ) const
 {
+    closingPower = 0;
     const materialModel& mA = A_.body->material();
     const materialModel& mB = B_.body->material();
 
@@ -1270,6 +1272,7 @@ bool Foam::contactPair::pairState
     tC = tnC*n + ttC;
     vCA = (vnC + w)*n + vtA;
     vCB = vnC*n + vtB;
+    closingPower = tnC*w;
     return true;
 }
 
@@ -1750,9 +1753,11 @@ void Foam::contactPair::addNonMatchingFluxes()
         A_.touching[i] = false;
         if (from.empty())
         {
+            scalar closingPower;
             pairState
             (
-                false, GREAT, a, mirrored(a), A_.tC[i], A_.vC[i], vOther
+                false, GREAT, a, mirrored(a), A_.tC[i], A_.vC[i], vOther,
+                closingPower
             );
             powerA[i] = A_.tC[i] & A_.vC[i];
             continue;
@@ -1766,15 +1771,17 @@ void Foam::contactPair::addNonMatchingFluxes()
             const bool closed = A_.pairClosed[i][m];
             const scalar allowance =
                 closed ? 0 : closingAllowance(A_.pairGap0[i][m], pairGap(a, b));
+            scalar closingPower;
             const bool touching = pairState
             (
-                closed, allowance, a, b, tPair[nPairs], vA, vBPair[nPairs]
+                closed, allowance, a, b, tPair[nPairs], vA, vBPair[nPairs],
+                closingPower
             );
             touchingPairs[nPairs] = touching;
             fraction += touching*w[m];
             A_.tC[i] += w[m]*tPair[nPairs];
             A_.vC[i] += w[m]*vA;
-            powerA[i] += w[m]*(tPair[nPairs] & vA);
+            powerA[i] += w[m]*((tPair[nPairs] & vA) - closingPower);
             powerB[i] += w[m]*(tPair[nPairs] & vBPair[nPairs]);
             ++nPairs;
         }
@@ -1903,11 +1910,13 @@ void Foam::contactPair::addFluxes()
         {
             partner = mirrored(a);
         }
+        scalar closingPower;
         A_.touching[i] = pairState
         (
-            A_.closed[i], allowance, a, partner, A_.tC[i], A_.vC[i], vOther
+            A_.closed[i], allowance, a, partner, A_.tC[i], A_.vC[i], vOther,
+            closingPower
         );
-        powerA[i] = A_.tC[i] & A_.vC[i];
+        powerA[i] = (A_.tC[i] & A_.vC[i]) - closingPower;
         powerB[i] = A_.tC[i] & vOther;
         if (A_.touching[i])
         {
@@ -1935,9 +1944,11 @@ void Foam::contactPair::addFluxes()
             partner = mirrored(b);
         }
         vector tC;
+        scalar closingPower;
         B_.touching[i] = pairState
         (
-            B_.closed[i], allowance, partner, b, tC, vOther, B_.vC[i]
+            B_.closed[i], allowance, partner, b, tC, vOther, B_.vC[i],
+            closingPower
         );
         if (B_.touching[i])
         {

@@ -194,9 +194,7 @@ void Foam::solidBoundaryConditions::rigidWall::prescribeDisplacements
         R, points,
         [&](const label i)
         {
-            // (every point: an open one may touch within the step)
             maxDepth_ = max(maxDepth_, -gap(X[i] + u[i], t));
-            return true;
         },
         [&](const label k)
         {

@@ -110,7 +110,7 @@ Foam::autoPtr<Foam::solidBoundaryCondition> Foam::solidBoundaryCondition::New
 }
 
 
-void Foam::solidBoundaryCondition::solveState
+Foam::scalar Foam::solidBoundaryCondition::solveState
 (
     const label k,
     const UList<vector>& u,
@@ -119,22 +119,46 @@ void Foam::solidBoundaryCondition::solveState
     const waveData& body,
     const scalar t,
     const stageStep& step,
-    const deformedDual* deformed
+    const deformedDual* deformed,
+    const bool extrapolated
 ) const
 {
     const label i = statePoint_[k];
     const vector& N = stateNormal_[k];
     vector n(H[i] & N);
     vector tL(fluxStress(q[i]) & N);
+    vector v(fluxVelocity(q[i]));
+    // The state extrapolated from the cell's centroid to the point
+    // (boundaryExtrapolation): its traction and velocity
+    vector tB(tL), vB(v);
+    if (extrapolated)
+    {
+        const stateIncrement& dq =
+            (*step.increment)[dual_.boundaryIndex()[i]];
+        fluxState qB(q[i]);
+        for (direction c = 0; c < nFluxComponents; ++c)
+        {
+            qB[c] += dq[c];
+        }
+        tB = fluxStress(qB) & N;
+        vB = fluxVelocity(qB);
+    }
     if (deformed)
     {
         // The deformed area per unit reference area of the state's
         // sub-faces in place of H N (the interior's pressure acts on
         // the deformed dual too: solidBody::addInteriorFluxes)
-        deformed->toDeformedArea
-        (
-            i, stateDeformedA_[k]/stateMagA_[k], tL, n
-        );
+        const vector a(stateDeformedA_[k]/stateMagA_[k]);
+        if (extrapolated)
+        {
+            vector hN(n);
+            deformed->toDeformedArea(i, a, tB, hN);
+        }
+        deformed->toDeformedArea(i, a, tL, n);
+        if (!extrapolated)
+        {
+            tB = tL;
+        }
     }
     const scalar Lambda = mag(n);
     n /= Lambda;
@@ -142,9 +166,17 @@ void Foam::solidBoundaryCondition::solveState
     const point& X = dual_.mesh().points()[i];
     stateP_[k] = contactState
     (
-        n, N, X + u[i], X + step.u0[i], fluxVelocity(q[i]), tL,
+        n, N, X + u[i], X + step.u0[i], vB, tB,
         w, t, step, stateT_[k], stateV_[k]
     );
+
+    // Numerical dissipation per unit area, measured with the point's own
+    // state: the condition's work less the power the residuals take from
+    // the body, v.t^C + t.v^C - t.v.  Not negative for the point's own
+    // state, whose Riemann solution upwinds its jump (doc/method.md,
+    // section 4)
+    return
+        stateP_[k] - (v & stateT_[k]) - (tL & stateV_[k]) + (tL & v);
 }
 
 
@@ -299,7 +331,16 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
             if (stateStage_[k] != stage_)
             {
                 stateStage_[k] = stage_;
-                solveState(k, u, q, H, body, t, step, nullptr);
+                // (extrapolated states one by one: kept where they
+                // dissipate)
+                if
+                (
+                    !step.increment || !extrapolates()
+                 || solveState(k, u, q, H, body, t, step, nullptr, true) < 0
+                )
+                {
+                    solveState(k, u, q, H, body, t, step, nullptr, false);
+                }
             }
         };
         for (const label i : *points)
@@ -330,9 +371,59 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
     }
 
     // The one-sided Riemann state of every distinct (point, normal) pair
+    scalar pointDissipation = 0;
     forAll(statePoint_, k)
     {
-        solveState(k, u, q, H, body, t, step, deformed);
+        pointDissipation +=
+            stateMagA_[k]
+           *solveState(k, u, q, H, body, t, step, deformed, false);
+    }
+    if (step.increment && extrapolates())
+    {
+        // Boundary extrapolation: the states from the points' extrapolated
+        // states, blended back towards the points' own by the one factor
+        // that keeps the patch's numerical dissipation from falling below
+        // zero.  The fluxes are linear in the states: the blend's
+        // dissipation is the same blend of the two.  (State by state, half
+        // of a smooth surface's states would fall back: the extrapolated
+        // traction is near zero and the own one's product with the
+        // velocity's increment takes either sign)
+        const List<vector> T0(stateT_), V0(stateV_);
+        const List<scalar> P0(stateP_);
+        scalar dissipation = 0;
+        // (and the rounding scale of the sums: a patch whose dissipation
+        // is zero to rounding, as at rest or in uniform motion, is left
+        // alone, or processors that sum in another order would blend
+        // differently)
+        scalar scale = 0;
+        forAll(statePoint_, k)
+        {
+            dissipation +=
+                stateMagA_[k]
+               *solveState(k, u, q, H, body, t, step, deformed, true);
+            const label i = statePoint_[k];
+            scale +=
+                stateMagA_[k]
+               *(
+                    mag(fluxVelocity(q[i]))*mag(fluxStress(q[i]))
+                  + mag(stateT_[k])*mag(stateV_[k])
+                );
+        }
+        reduce(pointDissipation, sumOp<scalar>());
+        reduce(dissipation, sumOp<scalar>());
+        reduce(scale, sumOp<scalar>());
+        if (dissipation < -1e-12*scale)
+        {
+            const scalar theta =
+                max(pointDissipation, scalar(0))
+               /(max(pointDissipation, scalar(0)) - dissipation);
+            forAll(statePoint_, k)
+            {
+                stateT_[k] = theta*stateT_[k] + (1 - theta)*T0[k];
+                stateV_[k] = theta*stateV_[k] + (1 - theta)*V0[k];
+                stateP_[k] = theta*stateP_[k] + (1 - theta)*P0[k];
+            }
+        }
     }
     forAll(sf.point, s)
     {

@@ -51,22 +51,32 @@ inline Foam::vector dualTriangleArea
 }
 
 // Signed volume of the pyramid with apex cc over that sub-face, positive
-// when the face is oriented away from cc
+// when the face is oriented away from cc: the two tetrahedra (a, mNext,
+// fc, cc) and (a, fc, mPrev, cc).  With moment, also their first moment
+// about a (each one's volume times its centroid less a)
 inline Foam::scalar subFacePyramidVolume
 (
     const Foam::point& a,
     const Foam::point& mNext,
     const Foam::point& fc,
     const Foam::point& mPrev,
-    const Foam::point& cc
+    const Foam::point& cc,
+    Foam::vector* moment = nullptr
 )
 {
     const Foam::vector ra(a - cc);
-    return
-    (
-        (ra & ((mNext - cc) ^ (fc - cc)))
-      + (ra & ((fc - cc) ^ (mPrev - cc)))
-    )/6.0;
+    const Foam::scalar six1 = ra & ((mNext - cc) ^ (fc - cc));
+    const Foam::scalar six2 = ra & ((fc - cc) ^ (mPrev - cc));
+    if (moment)
+    {
+        *moment =
+            (1.0/24.0)
+           *(
+                six1*((mNext - a) + (fc - a) + (cc - a))
+              + six2*((fc - a) + (mPrev - a) + (cc - a))
+            );
+    }
+    return (six1 + six2)/6.0;
 }
 
 // The mesh edge a-b among the edges of point a (what primitiveMesh's
@@ -151,7 +161,9 @@ void Foam::dualMesh::checkCells(const scalarField& V) const
 void Foam::dualMesh::calcCellContributions
 (
     const pointField& cellCentres,
-    vectorField& edgeC
+    vectorField& edgeC,
+    const labelUList& momentIndex,
+    vectorField& moment
 )
 {
     const pointField& X = mesh_.points();
@@ -199,8 +211,18 @@ void Foam::dualMesh::calcCellContributions
                     edgeC[e] -= S;
                 }
 
+                vector m;
                 volume_[a] +=
-                    sgn*subFacePyramidVolume(X[a], mNext, fc, mPrev, cc);
+                    sgn
+                   *subFacePyramidVolume
+                    (
+                        X[a], mNext, fc, mPrev, cc,
+                        momentIndex[a] >= 0 ? &m : nullptr
+                    );
+                if (momentIndex[a] >= 0)
+                {
+                    moment[momentIndex[a]] += sgn*m;
+                }
             }
         }
     }
@@ -425,6 +447,7 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
     boundaryPoints_(),
     boundaryNormals_(),
     boundaryIndex_(),
+    boundaryCentroidOffset_(),
     linearExact_(calcLinearExact()),
     faceEdges_(),
     deformable_(false)
@@ -448,14 +471,76 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
         checkCells(cellVolumes);
         cellVolumes.clear();
 
+        // The first moments of the dual cells of the points on physical
+        // patches (on any processor), kept for those points only
+        boolList onPatch(mesh.nPoints(), false);
+        const polyBoundaryMesh& patches = mesh.boundaryMesh();
+        for
+        (
+            label facei = mesh.nInternalFaces();
+            facei < mesh.nFaces();
+            ++facei
+        )
+        {
+            if (!patches[patches.whichPatch(facei)].coupled())
+            {
+                for (const label i : mesh.faces()[facei])
+                {
+                    onPatch[i] = true;
+                }
+            }
+        }
+        if (Pstream::parRun())
+        {
+            syncTools::syncPointList(mesh, onPatch, orEqOp<bool>(), false);
+        }
+        labelList momentIndex(mesh.nPoints(), -1);
+        label nMoments = 0;
+        forAll(onPatch, i)
+        {
+            if (onPatch[i])
+            {
+                momentIndex[i] = nMoments++;
+            }
+        }
+        onPatch.clear();
+        vectorField moment(nMoments, Zero);
+
         vectorField edgeC(mesh.nEdges(), Zero);
-        calcCellContributions(cellCentres, edgeC);
+        calcCellContributions(cellCentres, edgeC, momentIndex, moment);
         cellCentres.clear();
         calcBoundarySubFaces();
         synchronise(edgeC);
+        if (Pstream::parRun())
+        {
+            vectorField all(mesh.nPoints(), Zero);
+            forAll(momentIndex, i)
+            {
+                if (momentIndex[i] >= 0)
+                {
+                    all[i] = moment[momentIndex[i]];
+                }
+            }
+            syncTools::syncPointList(mesh, all, plusEqOp<vector>(), vector(Zero));
+            forAll(momentIndex, i)
+            {
+                if (momentIndex[i] >= 0)
+                {
+                    moment[momentIndex[i]] = all[i];
+                }
+            }
+        }
+        calcPointEdges();
+        calcBoundaryNormals();
+        boundaryCentroidOffset_.setSize(boundaryPoints_.size());
+        forAll(boundaryPoints_, b)
+        {
+            const label i = boundaryPoints_[b];
+            const label k = momentIndex[i];
+            boundaryCentroidOffset_[b] =
+                k >= 0 ? vector(-moment[k]/volume_[i]) : vector(Zero);
+        }
     }
-    calcPointEdges();
-    calcBoundaryNormals();
 
     forAll(volume_, i)
     {

@@ -20,6 +20,7 @@
 #include "IStringStream.H"
 
 #include <malloc.h>
+#include <cstring>
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -354,6 +355,23 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     );
     createBoundaryConditions();
     symmetry_.reset(new symmetryConstraint(dual_, bcs_));
+    if (scheme_->secondOrder() && scheme_->boundaryExtrapolation())
+    {
+        // A point on a mirror plane stands for its cell completed by the
+        // mirror image, whose centroid lies on the plane: no offset along
+        // the plane's normal (a one-layer plane-strain mesh is then the
+        // confined 3D bar's middle layer)
+        boundaryOffset_ = dual_.boundaryCentroidOffsets();
+        const labelList& sp = symmetry_->points();
+        forAll(sp, k)
+        {
+            const label b = dual_.boundaryIndex()[sp[k]];
+            if (b >= 0)
+            {
+                boundaryOffset_[b] = symmetry_->projections()[k] & boundaryOffset_[b];
+            }
+        }
+    }
     planeStrain_.reset(new planeStrainTie(dual_, bcs_, dict_, name_));
     contactRotation_.reset(new contactRotation(dual_, bcs_));
     stableStep_.reset
@@ -1210,7 +1228,13 @@ void Foam::solidBody::addBoundaryFluxes
 )
 {
     // (u0_: the start of the step, stored by storeState)
-    const solidBoundaryCondition::stageStep step{u0_, h, second};
+    const UList<stateIncrement>* increment = nullptr;
+    if (scheme_->secondOrder() && scheme_->boundaryExtrapolation())
+    {
+        updateBoundaryIncrements();
+        increment = &boundaryIncrement_;
+    }
+    const solidBoundaryCondition::stageStep step{u0_, h, second, increment};
     const List<tensor>& H = Hc();
     const materialModel& m = material_();
     const solidBoundaryCondition::waveData body
@@ -1232,6 +1256,99 @@ void Foam::solidBody::addBoundaryFluxes
         residual_.boundarySet[patchi] = true;
     }
 
+}
+
+
+void Foam::solidBody::updateBoundaryIncrements()
+{
+    // Omega_i G_i = sum_j 1/2 (f_j - f_i) C_ij: with interior slopes the
+    // boundary sub-faces take the point's own value and add nothing.  All
+    // boundary points every time, also in multirate stepping, where a
+    // level's sub-faces use their neighbours' states too
+    const labelList& bp = dual_.boundaryPoints();
+    const List<vector>& delta = boundaryOffset_;
+    const labelList& pes = dual_.pointEdgeStart();
+    const labelList& pe = dual_.pointEdges();
+    const scalarField& V = dual_.volumes();
+    boundaryIncrement_.setSize(bp.size());
+    forAll(bp, b)
+    {
+        const label i = bp[b];
+        const scalar* __restrict__ qi = q_[i].cdata();
+        stateIncrement& dq = boundaryIncrement_[b];
+        dq = scalar(0);
+        const scalar s = 0.5/V[i];
+        for (label k = pes[i]; k < pes[i + 1]; ++k)
+        {
+            const label e = pe[k];
+            const scalar w = s*(dual_.C(e, i) & delta[b]);
+            const scalar* __restrict__ qj = q_[dual_.otherPoint(e, i)].cdata();
+            for (direction c = 0; c < nFluxComponents; ++c)
+            {
+                dq[c] += w*(qj[c] - qi[c]);
+            }
+        }
+    }
+
+    if (Pstream::parRun())
+    {
+        // Each processor summed its own edges: add the shares of shared
+        // points.  Exchanged in the gradients' list, free until the
+        // interior fluxes compute them (multirate stepping, which keeps
+        // gradients between levels, runs serially), each increment's
+        // doubles in the bytes of a point's single-precision gradient: in
+        // single precision the processors' partial sums round otherwise
+        // than the serial sum, and the patches' energy blend
+        // (solidBoundaryCondition::addFluxes), whose factor jumps where the
+        // points' own states dissipate nothing, turned that into 6e-6 of
+        // the velocity between serial and parallel runs of the rings
+        static_assert
+        (
+            sizeof(stateIncrement) <= sizeof(fluxStateGradient),
+            "an increment fits in a gradient"
+        );
+        fluxStateGradient zero;
+        zero = 0.0;
+        forAll(G_, i)
+        {
+            if (dual_.pointWeight(i) < 1)
+            {
+                G_[i] = zero;
+            }
+        }
+        forAll(bp, b)
+        {
+            std::memcpy
+            (
+                G_[bp[b]].data(), boundaryIncrement_[b].cdata(),
+                sizeof(stateIncrement)
+            );
+        }
+        syncTools::syncPointList
+        (
+            mesh_, G_,
+            [](fluxStateGradient& x, const fluxStateGradient& y)
+            {
+                stateIncrement a, b;
+                std::memcpy(a.data(), x.cdata(), sizeof(stateIncrement));
+                std::memcpy(b.data(), y.cdata(), sizeof(stateIncrement));
+                for (direction c = 0; c < nFluxComponents; ++c)
+                {
+                    a[c] += b[c];
+                }
+                std::memcpy(x.data(), a.cdata(), sizeof(stateIncrement));
+            },
+            zero
+        );
+        forAll(bp, b)
+        {
+            std::memcpy
+            (
+                boundaryIncrement_[b].data(), G_[bp[b]].cdata(),
+                sizeof(stateIncrement)
+            );
+        }
+    }
 }
 
 

@@ -9,6 +9,9 @@ Description
     Checks the median dual of the case's mesh against its invariants:
       - closure  sum_j C_ij + sum_g C_g = 0 at every point;
       - the control volumes sum to the mesh volume (tets: V/4 per vertex);
+      - the boundary points' offsets from their dual cells' centroids
+        (tets and parallelepipeds, where the vertex parts' centroids are
+        known in closed form);
       - C_ij = -C_ji through the point-edge connectivity;
       - the Green-Gauss gradient of a linear field (exact on tets and
         parallelepipeds, with the boundary weights of dualMesh::patchSubFaces;
@@ -179,6 +182,68 @@ int main(int argc, char *argv[])
             }
             reduce(maxRel, maxOp<scalar>());
             check(maxRel < tol, "tet vertex volume = sum V/4", maxRel, tol);
+        }
+    }
+
+    // 2b. Boundary points' cell centroids ------------------------------------
+    // A vertex's part of a tetrahedron is the region where its barycentric
+    // coordinate is the largest: its volume is V/4 and its centroid
+    // X_v + 23/36 (X_c - X_v) (the mean of the largest of four uniform
+    // barycentric coordinates is 25/48); of a parallelepiped, the octant:
+    // V/8 and X_v + 1/2 (X_c - X_v)
+    {
+        const cellShapeList& shapes = mesh.cellShapes();
+        const cellModel& tet = cellModel::ref(cellModel::TET);
+        const cellModel& hex = cellModel::ref(cellModel::HEX);
+        bool exact = dual.linearExact();
+        forAll(shapes, celli)
+        {
+            exact =
+                exact
+             && (shapes[celli].model() == tet || shapes[celli].model() == hex);
+        }
+        reduce(exact, andOp<bool>());
+        if (exact)
+        {
+            const pointField& X = mesh.points();
+            vectorField moment(nPts, Zero);
+            scalarField volume(nPts, 0.0);
+            forAll(shapes, celli)
+            {
+                const bool isTet = (shapes[celli].model() == tet);
+                const scalar share = isTet ? 0.25 : 0.125;
+                const scalar k = isTet ? 23.0/36.0 : 0.5;
+                const point& Xc = mesh.cellCentres()[celli];
+                for (const label i : shapes[celli])
+                {
+                    const scalar Vi = share*mesh.cellVolumes()[celli];
+                    moment[i] += Vi*k*(Xc - X[i]);
+                    volume[i] += Vi;
+                }
+            }
+            dual.syncPointResidual(moment);
+            dual.syncPointResidual(volume);
+            const scalarField len(dual.lengths());
+            const labelList& bp = dual.boundaryPoints();
+            const List<vector>& offset = dual.boundaryCentroidOffsets();
+            scalar maxRel = 0;
+            scalar meanRatio = 0;
+            forAll(bp, b)
+            {
+                const label i = bp[b];
+                const vector expected(-moment[i]/volume[i]);
+                maxRel = max(maxRel, mag(offset[b] - expected)/len[i]);
+                meanRatio += mag(offset[b])/len[i];
+            }
+            reduce(maxRel, maxOp<scalar>());
+            check
+            (
+                maxRel < tol, "boundary centroid offsets (tets, parallelepipeds)",
+                maxRel, tol
+            );
+            Info<< "    boundary points' mean |X - c|/shortest edge: "
+                << returnReduce(meanRatio, sumOp<scalar>())
+                  /max(returnReduce(bp.size(), sumOp<label>()), 1) << nl;
         }
     }
 

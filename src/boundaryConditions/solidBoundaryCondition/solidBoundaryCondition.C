@@ -126,10 +126,23 @@ Foam::scalar Foam::solidBoundaryCondition::solveState
     const label i = statePoint_[k];
     const vector& N = stateNormal_[k];
     vector n(H[i] & N);
+    const vector hN(n);
     vector tL(fluxStress(q[i]) & N);
-    vector v(fluxVelocity(q[i]));
-    // The state extrapolated from the cell's centroid to the point
-    // (boundaryExtrapolation): its traction and velocity
+    const vector v(fluxVelocity(q[i]));
+    // The deformed area per unit reference area of the state's sub-faces
+    // in place of H N (the interior's pressure acts on the deformed dual
+    // too: solidBody::addInteriorFluxes)
+    const vector a
+    (
+        deformed ? vector(stateDeformedA_[k]/stateMagA_[k]) : vector(Zero)
+    );
+    if (deformed)
+    {
+        deformed->toDeformedArea(i, a, tL, n);
+    }
+    // The Riemann problem's input: the point's own state or the state
+    // extrapolated from its cell's centroid to the point
+    // (boundaryExtrapolation), with the same area map
     vector tB(tL), vB(v);
     if (extrapolated)
     {
@@ -142,22 +155,10 @@ Foam::scalar Foam::solidBoundaryCondition::solveState
         }
         tB = fluxStress(qB) & N;
         vB = fluxVelocity(qB);
-    }
-    if (deformed)
-    {
-        // The deformed area per unit reference area of the state's
-        // sub-faces in place of H N (the interior's pressure acts on
-        // the deformed dual too: solidBody::addInteriorFluxes)
-        const vector a(stateDeformedA_[k]/stateMagA_[k]);
-        if (extrapolated)
+        if (deformed)
         {
-            vector hN(n);
-            deformed->toDeformedArea(i, a, tB, hN);
-        }
-        deformed->toDeformedArea(i, a, tL, n);
-        if (!extrapolated)
-        {
-            tB = tL;
+            vector hNB(hN);
+            deformed->toDeformedArea(i, a, tB, hNB);
         }
     }
     const scalar Lambda = mag(n);
@@ -388,8 +389,9 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         // of a smooth surface's states would fall back: the extrapolated
         // traction is near zero and the own one's product with the
         // velocity's increment takes either sign)
-        const List<vector> T0(stateT_), V0(stateV_);
-        const List<scalar> P0(stateP_);
+        stateT0_ = stateT_;
+        stateV0_ = stateV_;
+        stateP0_ = stateP_;
         scalar dissipation = 0;
         // (and the rounding scale of the sums: a patch whose dissipation
         // is zero to rounding, as at rest or in uniform motion, is left
@@ -419,9 +421,9 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
                /(max(pointDissipation, scalar(0)) - dissipation);
             forAll(statePoint_, k)
             {
-                stateT_[k] = theta*stateT_[k] + (1 - theta)*T0[k];
-                stateV_[k] = theta*stateV_[k] + (1 - theta)*V0[k];
-                stateP_[k] = theta*stateP_[k] + (1 - theta)*P0[k];
+                stateT_[k] = theta*stateT_[k] + (1 - theta)*stateT0_[k];
+                stateV_[k] = theta*stateV_[k] + (1 - theta)*stateV0_[k];
+                stateP_[k] = theta*stateP_[k] + (1 - theta)*stateP0_[k];
             }
         }
     }

@@ -521,7 +521,10 @@ Foam::dualMesh::dualMesh(const polyMesh& mesh)
                     all[i] = moment[momentIndex[i]];
                 }
             }
-            syncTools::syncPointList(mesh, all, plusEqOp<vector>(), vector(Zero));
+            syncTools::syncPointList
+            (
+                mesh, all, plusEqOp<vector>(), vector(Zero)
+            );
             forAll(momentIndex, i)
             {
                 if (momentIndex[i] >= 0)

@@ -368,7 +368,8 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
             const label b = dual_.boundaryIndex()[sp[k]];
             if (b >= 0)
             {
-                boundaryOffset_[b] = symmetry_->projections()[k] & boundaryOffset_[b];
+                boundaryOffset_[b] =
+                    symmetry_->projections()[k] & boundaryOffset_[b];
             }
         }
     }
@@ -1282,7 +1283,8 @@ void Foam::solidBody::updateBoundaryIncrements()
         {
             const label e = pe[k];
             const scalar w = s*(dual_.C(e, i) & delta[b]);
-            const scalar* __restrict__ qj = q_[dual_.otherPoint(e, i)].cdata();
+            const scalar* __restrict__ qj =
+                q_[dual_.otherPoint(e, i)].cdata();
             for (direction c = 0; c < nFluxComponents; ++c)
             {
                 dq[c] += w*(qj[c] - qi[c]);
@@ -1295,13 +1297,10 @@ void Foam::solidBody::updateBoundaryIncrements()
         // Each processor summed its own edges: add the shares of shared
         // points.  Exchanged in the gradients' list, free until the
         // interior fluxes compute them (multirate stepping, which keeps
-        // gradients between levels, runs serially), each increment's
-        // doubles in the bytes of a point's single-precision gradient: in
-        // single precision the processors' partial sums round otherwise
-        // than the serial sum, and the patches' energy blend
-        // (solidBoundaryCondition::addFluxes), whose factor jumps where the
-        // points' own states dissipate nothing, turned that into 6e-6 of
-        // the velocity between serial and parallel runs of the rings
+        // gradients between levels, runs serially): each increment's
+        // doubles in the bytes of a point's single-precision gradient, so
+        // that the increments keep the states' precision without a second
+        // point-sized list
         static_assert
         (
             sizeof(stateIncrement) <= sizeof(fluxStateGradient),

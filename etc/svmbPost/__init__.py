@@ -3,6 +3,7 @@ tests; put $SVMB_PROJECT/etc on PYTHONPATH, as etc/bashrc does):
     svmbPost             readers and run figures (this module)
     svmbPost.casePost    results/ of the multi-dimensional tutorials
     svmbPost.barImpact   results/ of the bar-impact tutorials (exact solution)
+    svmbPost.barWall     results/ of a bar on a rigid wall (exact solution)
     svmbPost.stepField   what sets the time step (the stableDeltaT field)
 Case-specific figures live with the case (tutorials/taylorBar/taylorBarPost.py).
 

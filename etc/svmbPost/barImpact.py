@@ -133,7 +133,8 @@ def main():
     vC, sC = barImpactExact.contact_plateau(M1, M2, rho1, rho2, v0, s)
     tEnd = float(t[-1])
     vC += v2
-    summary = {'v0': v0, 'vBarTwo': v2, 'lengths': [L1, L2], 'gap': gap,
+    summary = {'v0': v0, 'vBarTwo': v2, 'lengths': [float(L1), float(L2)],
+               'gap': float(gap),
                'hugoniotS': s, 'exactContactVelocity': vC,
                'exactContactStress': sC}
 

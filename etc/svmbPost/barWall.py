@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+"""Post-processing of a bar on a rigid wall (run in the case directory):
+    python3 -m svmbPost.barWall [region]      (default region0)
+
+The exact solution of an elastic bar along x meeting a flat rigid wall
+across its end, for any material, length, velocity, gap, wall velocity and
+side (the wall before either end), read from the case: the material and
+initial velocity from [constant/<region>/]solidProperties, the wall from its
+`rigidWall` condition (point, normal, velocity), the bar's extent from the
+mesh, the probes from `probes/locations`.  In the wall's frame the bar
+approaches at a = -(v0 - V).n; from the touch, t0 = gap/a, a plane front
+of stress -Z a and wall velocity V runs up the bar (Z = rho c, c from the
+uniaxial-strain modulus lambda + 2 mu: the sides are symmetry planes), is
+reflected from the free end as a relief front, and the bar leaves at
+V + a n at t0 + 2L/c, stress-free.  A probe at distance d from the struck
+face holds v0 and zero stress until t0 + d/c, then V and -Z a until
+t0 + (2L - d)/c, then V + a n and zero stress.  With a Hugoniot pressure
+(hugoniot { s }) the plateau is the shock's, -rho (c + s a) a, and only
+the plateau is evaluated.  A case outside this (no wall across x, a bar not
+along x, a plastic material) is refused with a message.  Writes
+  results/history.csv   t, then vx, sxx and their exact values per probe
+  results/history.png   computed against exact histories
+  results/summary.json  the exact values, the struck face's plateau,
+                        contact time and rebound velocity, L1 errors per
+                        probe (time-averaged, normalised by a and Z a),
+                        numerical dissipation, final momentum, run figures
+and prints the summary."""
+import json
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+import svmbPost  # noqa: E402
+
+
+def refuse(message):
+    svmbPost.fail('barWallPost', message + ' (this case is outside what the '
+                  'exact solution of a bar on a rigid wall evaluates)')
+
+
+def _env():
+    # (OpenFOAM warns on stdout when PWD is not the working directory, as
+    # after a chdir in the scripts that call this module)
+    return dict(os.environ, PWD=os.getcwd())
+
+
+def entry(path, key, default=None):
+    r = subprocess.run(['foamDictionary', '-entry', key, '-value', path],
+                       capture_output=True, text=True, env=_env())
+    if r.returncode != 0:
+        if default is None:
+            refuse('no %s in %s' % (key, path))
+        return default
+    return r.stdout.strip()
+
+
+def vector(text):
+    v = [float(c) for c in re.findall(r'[-+0-9.eE]+', text)]
+    if len(v) != 3:
+        refuse('not a vector: %s' % text)
+    return np.array(v)
+
+
+def uniaxial_modulus(path):
+    """rho, the uniaxial-strain modulus lambda + 2 mu and the Hugoniot
+    slope of an elastic material."""
+    kind = entry(path, 'material/type')
+    if kind not in ('linearElastic', 'neoHookean', 'mooneyRivlin'):
+        refuse('the material is %s, not an elastic one' % kind)
+    rho = float(entry(path, 'material/rho'))
+    E = entry(path, 'material/E', 'none')
+    if E != 'none':
+        nu = float(entry(path, 'material/nu'))
+        M = float(E) * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
+    else:
+        M = (float(entry(path, 'material/kappa'))
+             + 4.0 * float(entry(path, 'material/mu')) / 3.0)
+    s = float(entry(path, 'material/hugoniot/s', '0'))
+    return rho, M, s
+
+
+def setup(region='region0'):
+    """The case's exact problem (a dict)."""
+    sub = '' if region == 'region0' else region + '/'
+    path = 'constant/%ssolidProperties' % sub
+    rho, M, s = uniaxial_modulus(path)
+    v0 = vector(entry(path, 'initialVelocity', '(0 0 0)'))
+    if abs(v0[1]) + abs(v0[2]) > 1e-12 * max(abs(v0[0]), 1e-300):
+        refuse('the bar moves across x (initialVelocity %s)' % v0)
+    walls = []
+    r = subprocess.run(['foamDictionary', '-keywords', '-entry',
+                        'boundaryConditions', path],
+                       capture_output=True, text=True, env=_env())
+    for patch in r.stdout.split():
+        if entry(path, 'boundaryConditions/%s/type' % patch) == 'rigidWall':
+            walls.append(patch)
+    if len(walls) != 1:
+        refuse('%d rigidWall conditions (one is evaluated)' % len(walls))
+    w = 'boundaryConditions/%s/' % walls[0]
+    xw = vector(entry(path, w + 'point'))
+    n = vector(entry(path, w + 'normal'))
+    n /= np.linalg.norm(n)
+    V = vector(entry(path, w + 'velocity', '(0 0 0)'))
+    if abs(abs(n[0]) - 1) > 1e-12:
+        refuse('the wall is not across x (normal %s)' % n)
+    if abs(V[1]) + abs(V[2]) > 1e-12 * max(abs(V[0]), 1e-300):
+        refuse('the wall moves along itself (velocity %s)' % V)
+    X = svmbPost.read_points('constant/%spolyMesh/points' % sub)
+    lo, hi = X.min(axis=0), X.max(axis=0)
+    L = hi[0] - lo[0]
+    if max(hi[1] - lo[1], hi[2] - lo[2]) > L:
+        refuse('the body is not a bar along x (extent %s)' % (hi - lo))
+    # The struck face: the end facing the wall (the normal points into
+    # the body)
+    xf = lo[0] if n[0] > 0 else hi[0]
+    gap = (xf - xw[0]) * n[0]
+    if gap < -1e-9 * L:
+        refuse('the bar starts behind the wall (gap %g)' % gap)
+    gap = gap if gap > 0 else 0.0
+    a = -(v0[0] - V[0]) * n[0]
+    if not a > 0:
+        refuse('the bar and the wall do not approach (relative speed %g)'
+               % -a)
+    c = np.sqrt(M / rho)
+    Z = rho * c
+    probes = [vector(p) for p in re.findall(
+        r'\([^()]*\)', entry(path, 'probes/locations', '()'))]
+    if not probes:
+        refuse('no probes')
+    return {'rho': rho, 'M': M, 'c': c, 'Z': Z, 'hugoniotS': s,
+            'v0': v0[0], 'wallVelocity': V[0], 'normal': n[0], 'a': a,
+            'gap': gap, 'length': L, 'mass': rho * L *
+            (hi[1] - lo[1]) * (hi[2] - lo[2]),
+            'contactStartExact': gap / a,
+            'contactTimeExact': 2 * L / c,
+            'stressExact': -rho * (c + s * a) * a,
+            'reboundVelocityExact': V[0] + a * n[0],
+            'probeDistances': [abs(p[0] - xf) for p in probes]}
+
+
+def exact_probe(S, t, d):
+    """Exact velocity and axial stress at distance d from the struck face
+    (linear bar)."""
+    t0, c, L = S['contactStartExact'], S['c'], S['length']
+    v = np.where(t < t0 + d / c, S['v0'],
+                 np.where(t < t0 + (2 * L - d) / c, S['wallVelocity'],
+                          S['reboundVelocityExact']))
+    s = np.where((t >= t0 + d / c) & (t < t0 + (2 * L - d) / c),
+                 S['stressExact'], 0.0)
+    return v, s
+
+
+def evaluate(S, probes, energy):
+    """The summary's measured figures from the probe and energy histories
+    (structured arrays of probes.csv and energy.csv)."""
+    t = probes['t']
+    t0, T, a = S['contactStartExact'], S['contactTimeExact'], S['a']
+    out = {}
+    face = int(np.argmin(S['probeDistances']))
+    if S['probeDistances'][face] > 1e-9 * S['length']:
+        refuse('no probe on the struck face')
+    m = (t > t0 + 0.15 * T) & (t < t0 + 0.85 * T)
+    out['plateauStress'] = float(probes['sxx%d' % face][m].mean())
+    # the end of contact: the face halfway from the wall's velocity to the
+    # rebound velocity
+    vf = (probes['vx%d' % face] - S['wallVelocity']) * S['normal']
+    after = np.where((t > t0 + 0.5 * T) & (vf > 0.5 * a))[0]
+    out['contactTime'] = float(t[after[0]] - t0) if len(after) else None
+    m = t > t0 + 1.05 * T
+    out['reboundVelocity'] = (float(probes['vx%d' % face][m].mean())
+                              if m.any() else None)
+    if S['hugoniotS'] == 0:
+        for k, d in enumerate(S['probeDistances']):
+            v, s = exact_probe(S, t, d)
+            out['L1_v_probe%d' % k] = float(
+                np.mean(np.abs(probes['vx%d' % k] - v)) / a)
+            out['L1_s_probe%d' % k] = float(
+                np.mean(np.abs(probes['sxx%d' % k] - s))
+                / abs(S['stressExact']))
+    D = energy['numericalDissipation']
+    # (a bar at rest struck by a moving wall starts without energy: the
+    # wall's work is the scale then)
+    E0 = max(energy['total'][0], np.abs(energy['externalWork']).max())
+    out['energyScale'] = float(E0)
+    out['dissipationMin'] = float(D.min() / E0)
+    out['dissipationLargestFall'] = float(
+        max(0.0, np.max(np.maximum.accumulate(D) - D)) / E0)
+    out['energyLostPercent'] = float(100 * D[-1] / E0)
+    out['momentumFinal'] = float(energy['px'][-1])
+    out['momentumExactAfterSeparation'] = \
+        S['mass'] * S['reboundVelocityExact']
+    return out
+
+
+def main():
+    region = sys.argv[1] if len(sys.argv) > 1 else 'region0'
+    S = setup(region)
+    P = svmbPost.read_csv('postProcessing/%s/probes.csv' % region)
+    E = svmbPost.read_csv('postProcessing/%s/energy.csv' % region)
+    summary = {k: v for k, v in S.items() if k != 'probeDistances'}
+    summary['probeDistances'] = S['probeDistances']
+    summary.update(evaluate(S, P, E))
+    stats = svmbPost.run_statistics()
+    for k in ('steps', 'wallTime', 'points', 'throughput'):
+        summary[k] = stats[k]
+
+    os.makedirs('results', exist_ok=True)
+    t = P['t']
+    cols, names = [t], ['t']
+    for k, d in enumerate(S['probeDistances']):
+        v, s = exact_probe(S, t, d)
+        cols += [P['vx%d' % k], v, P['sxx%d' % k], s]
+        names += ['vx%d' % k, 'vx%dExact' % k, 'sxx%d' % k, 'sxx%dExact' % k]
+    np.savetxt('results/history.csv', np.vstack(cols).T, delimiter=',',
+               comments='', header=','.join(names))
+    json.dump(summary, open('results/summary.json', 'w'), indent=2)
+
+    try:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+        for k, d in enumerate(S['probeDistances']):
+            v, s = exact_probe(S, t, d)
+            for i, (q, e) in enumerate(((P['vx%d' % k], v),
+                                        (P['sxx%d' % k], s))):
+                line, = ax[i].plot(t, q, label='%g from the face' % d)
+                if S['hugoniotS'] == 0:
+                    ax[i].plot(t, e, ':', color=line.get_color())
+        ax[0].set_ylabel('velocity (dotted: exact)')
+        ax[1].set_ylabel('axial Cauchy stress')
+        ax[0].legend(fontsize=8)
+        ax[1].set_xlabel('t')
+        fig.suptitle('%s: bar on a rigid wall (%d points, %.1f s wall)'
+                     % (os.path.basename(os.getcwd()), summary['points'],
+                        summary['wallTime']))
+        fig.tight_layout()
+        fig.savefig('results/history.png', dpi=90)
+    except ImportError:
+        print('barWallPost: matplotlib not available, no plot')
+
+    for k, v in summary.items():
+        if isinstance(v, list):
+            v = ' '.join('%.6g' % x for x in v)
+        elif isinstance(v, float):
+            v = '%.6g' % v
+        print('  %-28s %s' % (k, v))
+
+
+if __name__ == '__main__':
+    main()

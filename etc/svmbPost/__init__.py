@@ -135,3 +135,24 @@ def wall_depths(log='log.solidVertexMBFoam'):
 
 def read_csv(path):
     return np.genfromtxt(path, delimiter=',', names=True)
+
+
+def save_history_plot(fig, what, summary, path='results/history.png'):
+    """Title a probe-history figure with the case, what it shows and the
+    run's size and wall time, and write it."""
+    fig.suptitle('%s: %s (%d points, %.1f s wall)'
+                 % (os.path.basename(os.getcwd()), what, summary['points'],
+                    summary['wallTime']))
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+
+
+def print_summary(summary, width=24):
+    """One line per entry: floats to 6 digits, lists space-separated."""
+    for k, v in summary.items():
+        if isinstance(v, list):
+            v = ' '.join('%.6g' % x if isinstance(x, float) else str(x)
+                         for x in v)
+        elif isinstance(v, float):
+            v = '%.6g' % v
+        print('  %-*s %s' % (width, k, v))

@@ -213,16 +213,11 @@ def main():
             ax[i].set_ylabel(lab)
             ax[i].legend(fontsize=8)
         ax[1].set_xlabel('t')
-        fig.suptitle('%s: contact-face probes (%d points, %.1f s wall)'
-                     % (os.path.basename(os.getcwd()), summary['points'],
-                        summary['wallTime']))
-        fig.tight_layout()
-        fig.savefig('results/history.png', dpi=90)
+        svmbPost.save_history_plot(fig, 'contact-face probes', summary)
     except ImportError:
         print('barImpactPost: matplotlib not available, no plot')
 
-    for k, v in summary.items():
-        print('  %-24s %s' % (k, ('%.6g' % v) if isinstance(v, float) else v))
+    svmbPost.print_summary(summary)
 
 
 if __name__ == '__main__':

@@ -251,20 +251,11 @@ def main():
         ax[1].set_ylabel('axial Cauchy stress')
         ax[0].legend(fontsize=8)
         ax[1].set_xlabel('t')
-        fig.suptitle('%s: bar on a rigid wall (%d points, %.1f s wall)'
-                     % (os.path.basename(os.getcwd()), summary['points'],
-                        summary['wallTime']))
-        fig.tight_layout()
-        fig.savefig('results/history.png', dpi=90)
+        svmbPost.save_history_plot(fig, 'bar on a rigid wall', summary)
     except ImportError:
         print('barWallPost: matplotlib not available, no plot')
 
-    for k, v in summary.items():
-        if isinstance(v, list):
-            v = ' '.join('%.6g' % x for x in v)
-        elif isinstance(v, float):
-            v = '%.6g' % v
-        print('  %-28s %s' % (k, v))
+    svmbPost.print_summary(summary, 28)
 
 
 if __name__ == '__main__':

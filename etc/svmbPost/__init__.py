@@ -15,6 +15,7 @@ from these files, never from the wording of the log.
 """
 import os
 import re
+import subprocess
 import sys
 import numpy as np
 
@@ -156,3 +157,43 @@ def print_summary(summary, width=24):
         elif isinstance(v, float):
             v = '%.6g' % v
         print('  %-*s %s' % (width, k, v))
+
+
+def _foam_dictionary(args):
+    # (OpenFOAM warns on stdout when PWD is not the working directory, as
+    # after a chdir in the scripts that post-process a case)
+    return subprocess.run(['foamDictionary'] + args, capture_output=True,
+                          text=True, env=dict(os.environ, PWD=os.getcwd()))
+
+
+def dict_entry(path, key, default=None, tool='svmbPost'):
+    """The value of a dictionary entry as text (foamDictionary); the
+    default where it is missing, or a stop naming the tool without one."""
+    r = _foam_dictionary(['-entry', key, '-value', path])
+    if r.returncode != 0:
+        if default is None:
+            fail(tool, 'no %s in %s' % (key, path))
+        return default
+    return r.stdout.strip()
+
+
+def dict_keywords(path, key):
+    """The keywords of a sub-dictionary (foamDictionary -keywords)."""
+    return _foam_dictionary(['-keywords', '-entry', key, path]).stdout.split()
+
+
+def uniaxial_material(path, refuse, tool='svmbPost'):
+    """rho and the uniaxial-strain modulus lambda + 2 mu (a bar between
+    symmetry sides) of an elastic material in a solidProperties file;
+    refuse(message) for any other material."""
+    kind = dict_entry(path, 'material/type', tool=tool)
+    if kind not in ('linearElastic', 'neoHookean', 'mooneyRivlin'):
+        refuse('the material of %s is %s, not an elastic one' % (path, kind))
+    rho = float(dict_entry(path, 'material/rho', tool=tool))
+    E = dict_entry(path, 'material/E', 'none', tool)
+    if E != 'none':
+        nu = float(dict_entry(path, 'material/nu', tool=tool))
+        return rho, float(E) * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
+    return rho, (float(dict_entry(path, 'material/kappa', tool=tool))
+                 + 4.0 * float(dict_entry(path, 'material/mu', tool=tool))
+                 / 3.0)

@@ -23,7 +23,6 @@ and prints the summary."""
 import json
 import os
 import re
-import subprocess
 import sys
 
 import numpy as np
@@ -41,31 +40,12 @@ def refuse(message):
 
 
 def entry(path, key, default=None):
-    r = subprocess.run(['foamDictionary', '-entry', key, '-value', path],
-                       capture_output=True, text=True)
-    if r.returncode != 0:
-        if default is None:
-            sys.exit('barImpactPost: no %s in %s' % (key, path))
-        return default
-    return r.stdout.strip()
+    return svmbPost.dict_entry(path, key, default, 'barImpactPost')
 
 
 def material(region):
     path = 'constant/%s/solidProperties' % region
-    kind = entry(path, 'material/type')
-    if kind not in ('linearElastic', 'neoHookean', 'mooneyRivlin'):
-        refuse('%s is %s, not an elastic material' % (region, kind))
-    rho = float(entry(path, 'material/rho'))
-    E = entry(path, 'material/E', 'none')
-    if E != 'none':
-        nu = float(entry(path, 'material/nu'))
-        E = float(E)
-        # uniaxial-strain modulus (symmetry sides): lambda + 2 mu
-        M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
-    else:
-        kappa = float(entry(path, 'material/kappa'))
-        mu = float(entry(path, 'material/mu'))
-        M = kappa + 4.0 * mu / 3.0
+    rho, M = svmbPost.uniaxial_material(path, refuse, 'barImpactPost')
     v = [float(c) for c in entry(path, 'initialVelocity', '(0 0 0)')
          .strip('()').split()]
     if abs(v[1]) + abs(v[2]) > 1e-12 * max(abs(v[0]), 1e-300):

@@ -32,12 +32,11 @@ and prints the summary."""
 import json
 import os
 import re
-import subprocess
 import sys
 
 import numpy as np
 
-import svmbPost  # noqa: E402
+import svmbPost
 
 
 def refuse(message):
@@ -45,20 +44,8 @@ def refuse(message):
                   'exact solution of a bar on a rigid wall evaluates)')
 
 
-def _env():
-    # (OpenFOAM warns on stdout when PWD is not the working directory, as
-    # after a chdir in the scripts that call this module)
-    return dict(os.environ, PWD=os.getcwd())
-
-
 def entry(path, key, default=None):
-    r = subprocess.run(['foamDictionary', '-entry', key, '-value', path],
-                       capture_output=True, text=True, env=_env())
-    if r.returncode != 0:
-        if default is None:
-            refuse('no %s in %s' % (key, path))
-        return default
-    return r.stdout.strip()
+    return svmbPost.dict_entry(path, key, default, 'barWallPost')
 
 
 def vector(text):
@@ -68,39 +55,19 @@ def vector(text):
     return np.array(v)
 
 
-def uniaxial_modulus(path):
-    """rho, the uniaxial-strain modulus lambda + 2 mu and the Hugoniot
-    slope of an elastic material."""
-    kind = entry(path, 'material/type')
-    if kind not in ('linearElastic', 'neoHookean', 'mooneyRivlin'):
-        refuse('the material is %s, not an elastic one' % kind)
-    rho = float(entry(path, 'material/rho'))
-    E = entry(path, 'material/E', 'none')
-    if E != 'none':
-        nu = float(entry(path, 'material/nu'))
-        M = float(E) * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
-    else:
-        M = (float(entry(path, 'material/kappa'))
-             + 4.0 * float(entry(path, 'material/mu')) / 3.0)
-    s = float(entry(path, 'material/hugoniot/s', '0'))
-    return rho, M, s
-
-
 def setup(region='region0'):
     """The case's exact problem (a dict)."""
     sub = '' if region == 'region0' else region + '/'
     path = 'constant/%ssolidProperties' % sub
-    rho, M, s = uniaxial_modulus(path)
+    rho, M = svmbPost.uniaxial_material(path, refuse, 'barWallPost')
+    s = float(entry(path, 'material/hugoniot/s', '0'))
     v0 = vector(entry(path, 'initialVelocity', '(0 0 0)'))
     if abs(v0[1]) + abs(v0[2]) > 1e-12 * max(abs(v0[0]), 1e-300):
         refuse('the bar moves across x (initialVelocity %s)' % v0)
-    walls = []
-    r = subprocess.run(['foamDictionary', '-keywords', '-entry',
-                        'boundaryConditions', path],
-                       capture_output=True, text=True, env=_env())
-    for patch in r.stdout.split():
-        if entry(path, 'boundaryConditions/%s/type' % patch) == 'rigidWall':
-            walls.append(patch)
+    walls = [patch for patch in svmbPost.dict_keywords(path,
+                                                      'boundaryConditions')
+             if entry(path, 'boundaryConditions/%s/type' % patch)
+             == 'rigidWall']
     if len(walls) != 1:
         refuse('%d rigidWall conditions (one is evaluated)' % len(walls))
     w = 'boundaryConditions/%s/' % walls[0]

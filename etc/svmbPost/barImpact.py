@@ -18,7 +18,10 @@ pressure, by the Hugoniot plateau.  Writes
   results/summary.json  L1 errors (time-averaged, normalised by v0 and by the
                         exact contact stress), plateaus, contact times,
                         energy lost to numerical dissipation (% of initial),
-                        largest interpenetration, wall time
+                        largest interpenetration, wall time, and the
+                        case's time scale transitTime = 2 min(L/c) (the
+                        first relief's return to the contact; the windows
+                        above are set in it, so any units work)
 and prints the summary."""
 import json
 import os
@@ -118,16 +121,22 @@ def main():
                'hugoniotS': s, 'exactContactVelocity': vC,
                'exactContactStress': sC}
 
+    # The case's own time scale: the first relief's return to the contact,
+    # twice the shorter transit time of the two bars (0.2 for A1)
+    transit = 2 * min(L1 / np.sqrt(M1 / rho1), L2 / np.sqrt(M2 / rho2))
+    summary['transitTime'] = float(transit)
+
     # contact window from the computed histories: start when Bar Two's face
     # moves (half the contact velocity), end when Bar One's face stress is
-    # back to zero (5 % of the contact stress)
+    # back to zero (5 % of the contact stress), looked for from a tenth of
+    # the transit time after the start (past the rise of the onset)
     moving = np.where(np.abs(p2['vx0'] - v2) > 0.5 * abs(vC - v2))[0]
     tContact = float(t[moving[0]]) if len(moving) else None
     summary['contactStart'] = tContact
     summary['contactStartExact'] = gap / v0
     sep = None
     if tContact is not None:
-        after = np.where((t > tContact + 0.02)
+        after = np.where((t > tContact + 0.1 * transit)
                          & (np.abs(p1['sxx0']) < 0.05 * abs(sC)))[0]
         sep = float(t[after[0]]) if len(after) else None
     summary['separation'] = sep
@@ -159,7 +168,8 @@ def main():
         L1['L1_v'] = 0.5 * (L1['L1_v_barOne'] + L1['L1_v_barTwo'])
         L1['L1_s'] = 0.5 * (L1['L1_s_barOne'] + L1['L1_s_barTwo'])
         summary.update(L1)
-        sep = np.where((exact[:, 0] > gap / v0 + 0.01) & (exact[:, 2] == 0))[0]
+        sep = np.where((exact[:, 0] > gap / v0 + 0.05 * transit)
+                       & (exact[:, 2] == 0))[0]
         summary['separationExact'] = float(exact[sep[0], 0]) if len(sep) else None
 
     E0 = e1['total'][0] + e2['total'][0]

@@ -710,11 +710,28 @@ struct solverTraction
 {
     const Foam::interiorRiemannSolver& solver;
 
+    //- Whether compressive edges take their jumps' own impedances (below)
+    static constexpr bool compressiveJumps = false;
+
     Foam::vector operator()
     (
         const Foam::vector& tL, const Foam::vector& tR,
         const Foam::vector& vL, const Foam::vector& vR,
         const Foam::vector& n, const Foam::scalar Lambda
+    ) const
+    {
+        return solver.traction(tL, tR, vL, vR, n, Lambda);
+    }
+
+    //- (not used: compressiveJumps is false)
+    Foam::vector operator()
+    (
+        const Foam::vector& tL, const Foam::vector& tR,
+        const Foam::vector& vL, const Foam::vector& vR,
+        const Foam::vector& n, const Foam::scalar Lambda,
+        const Foam::scalar, const Foam::scalar,
+        const Foam::scalar, const Foam::scalar,
+        const Foam::scalar
     ) const
     {
         return solver.traction(tL, tR, vL, vR, n, Lambda);
@@ -727,6 +744,8 @@ struct stickTraction
 {
     const Foam::scalar Zp, Zs;
 
+    static constexpr bool compressiveJumps = true;
+
     Foam::vector operator()
     (
         const Foam::vector& tL, const Foam::vector& tR,
@@ -737,6 +756,31 @@ struct stickTraction
         return Foam::acousticFormulas::interiorStickTraction
         (
             tL, tR, vL, vR, n, Lambda, Zp, Zs
+        );
+    }
+
+    //- The same with each part's impedance the points' own jump's within
+    //  [lower, 1] times the wave's (acousticFormulas::jumpTractionFactor),
+    //  from the parts of their traction and velocity jumps: normal (dtn,
+    //  dvn) and the magnitudes of the tangential ones (dtt, dvt).  (With
+    //  lower = 1 the wave's, to the bit)
+    Foam::vector operator()
+    (
+        const Foam::vector& tL, const Foam::vector& tR,
+        const Foam::vector& vL, const Foam::vector& vR,
+        const Foam::vector& n, const Foam::scalar Lambda,
+        const Foam::scalar dtn, const Foam::scalar dvn,
+        const Foam::scalar dtt, const Foam::scalar dvt,
+        const Foam::scalar lower
+    ) const
+    {
+        using namespace Foam::acousticFormulas;
+        const Foam::scalar s = compressedFaceFactor(Lambda);
+        return Foam::acousticFormulas::stickTraction
+        (
+            tL, tR, vL, vR, n,
+            s*Zp*jumpTractionFactor(dtn, dvn, s*Zp, lower),
+            s*Zs*jumpTractionFactor(dtt, dvt, s*Zs, lower)
         );
     }
 };
@@ -798,6 +842,19 @@ void Foam::solidBody::addInteriorFluxes
     const scalar ZpBody = material_->Zp();
     const scalar shockMass = upwindF || shockF ? material_->shockMass() : 0;
     const bool shearFree = material_->shearFree();
+    // With the upwind F flux, the edges whose points close (a compressive
+    // front) take their jumps' own impedances, in the traction and in the
+    // F flux (acousticFormulas::jumpTractionFactor): an oblique
+    // front then leaves a struck face's one-sided cells on the front's
+    // characteristic.  Opening edges (relief fronts) keep the wave's: a
+    // sharper relief front leaves more tension at a face that separates
+    // (doc/results.md, "Onset and release on other bar meshes").  Not
+    // with a limiter that steepens beyond the front's own jump (superbee):
+    // the compressive bump it leaves ahead of a release is an artefact,
+    // which the jump's own impedance would damp less
+    const bool compressiveJumps =
+        upwindF && Traction::compressiveJumps && !shearFree
+     && !(scheme_->secondOrder() && limiter_->overSteepens());
     // The pressure on the deformed dual: the central part of the traction,
     // pi H N A, acts on the deformed area vector instead
     const vector* __restrict__ deformedC =
@@ -858,6 +915,31 @@ void Foam::solidBody::addInteriorFluxes
         // bodies")
         const vector tL(PL & N), tR(PR & N);
         vector vAverage(0.5*(vL + vR));
+
+        // The points' own jumps (the F flux's weight and impedances), and
+        // their normal and tangential parts
+        vector dtP(Zero);
+        scalar dtPn = 0, dvPn = 0, dtPt = 0, dvPt = 0;
+        // (the lower bound of the jumps' own impedances, in units of the
+        // wave's: one keeps the wave's, and the choice is a select, not a
+        // branch, since closing and opening edges alternate unpredictably)
+        scalar lower = 1;
+        if (upwindF)
+        {
+            dtP = (fluxStress(q_[j]) - fluxStress(q_[i])) & N;
+            const vector dvP(fluxVelocity(q_[j]) - fluxVelocity(q_[i]));
+            dtPn = dtP & n;
+            dvPn = dvP & n;
+            if (vStabS > 0)
+            {
+                dtPt = mag(dtP - dtPn*n);
+                dvPt = mag(dvP - dvPn*n);
+            }
+            lower =
+                compressiveJumps && dvPn < 0
+              ? acousticFormulas::compressiveJumpLowerBound : 1;
+        }
+
         if (shearFree)
         {
             const vector vi(fluxVelocity(q_[i]));
@@ -881,6 +963,13 @@ void Foam::solidBody::addInteriorFluxes
                     (0.5*(pressureCoeff[i] + pressureCoeff[j]))
                    *(deformedC[e] - A*hN);
             }
+        }
+        else if (compressiveJumps)
+        {
+            tC = A*traction
+            (
+                tL, tR, vL, vR, n, magHN, dtPn, dvPn, dtPt, dvPt, lower
+            );
         }
         else
         {
@@ -930,7 +1019,10 @@ void Foam::solidBody::addInteriorFluxes
         scalar vStabT = invS*vStabS;
         if (w > 0)
         {
-            const vector dtP((fluxStress(q_[j]) - fluxStress(q_[i])) & N);
+            if (!upwindF)
+            {
+                dtP = (fluxStress(q_[j]) - fluxStress(q_[i])) & N;
+            }
             const scalar jump1 = mag(dtP);
             w *= jump1 > VSMALL ? min(1.0, 2*mag(dt)/jump1) : 1.0;
             dt *= w;
@@ -948,21 +1040,17 @@ void Foam::solidBody::addInteriorFluxes
                 // wave's impedance, 61 % with the jump's; the nearly
                 // incompressible bars stopped with J < 0 at their contact
                 // face; doc/results.md, "The upwind F flux in slow modes")
-                const vector dvP
+                // (on a closing edge the jump's own impedance also below
+                // the wave's, down to half of it: compressiveJumps above)
+                vStabN *= acousticFormulas::jumpUpwindFactor
                 (
-                    fluxVelocity(q_[j]) - fluxVelocity(q_[i])
-                );
-                vStabN *= acousticFormulas::slowModeFactor
-                (
-                    dtP & n, dvP & n, 0.5/vStabN
+                    dtPn, dvPn, 0.5/vStabN, lower
                 );
                 if (vStabT > 0)
                 {
-                    vStabT *= acousticFormulas::slowModeFactor
+                    vStabT *= acousticFormulas::jumpUpwindFactor
                     (
-                        mag(acousticFormulas::tangential(dtP, n)),
-                        mag(acousticFormulas::tangential(dvP, n)),
-                        0.5/vStabT
+                        dtPt, dvPt, 0.5/vStabT, lower
                     );
                 }
             }

@@ -143,6 +143,99 @@ int main(int argc, char *argv[])
             acousticFormulas::slowModeFactor(1, 0, 2), 0);
     }
 
+    Info<< "Oblique plane p-wave across an edge (nu = 0, rho 1, E 1)" << endl;
+    {
+        // A compressive p-wave along d, [v] = a d (a < 0: the edge's points
+        // close), crosses an edge of normal n at cos(theta) = 0.6 from L to
+        // R; its jumps [sigma] = -(a/c_p) 2 mu d d (lambda = 0), [t] =
+        // [sigma] n.  The edge's Riemann solution must be the upstream
+        // state L: with the jump's own impedances (0.6 Z_p in the normal
+        // part, 0.6 sqrt(2) Z_s in the tangential one, both within
+        // [Z/2, Z]) the stick traction is t^L and the F flux's upwind
+        // velocity v^L; with the wave impedances neither is
+        const scalar rho = 1, E = 1, mu = E/2;
+        const scalar cp = std::sqrt(E/rho), cs = std::sqrt(mu/rho);
+        const scalar Zp = rho*cp, Zs = rho*cs;
+        const vector n(1, 0, 0);
+        const vector d(0.6, 0.8, 0);
+        const scalar a = -0.1;
+        const vector vL(0.3, -0.2, 0.1), tL(-0.05, 0.02, 0.01);
+        const vector dv(a*d);
+        const vector dt(-(a/cp)*2*mu*(d & n)*d);
+        const vector vR(vL + dv), tR(tL + dt);
+        const scalar dtn = dt & n, dvn = dv & n;
+        const scalar dtt = mag(dt - dtn*n), dvt = mag(dv - dvn*n);
+
+        const scalar fn =
+            acousticFormulas::jumpTractionFactor
+            (
+                dtn, dvn, Zp, acousticFormulas::compressiveJumpLowerBound
+            );
+        const scalar ft =
+            acousticFormulas::jumpTractionFactor
+            (
+                dtt, dvt, Zs, acousticFormulas::compressiveJumpLowerBound
+            );
+        check("traction factor, normal part (cos theta)", fn, 0.6);
+        check("traction factor, tangential part", ft, 0.6*std::sqrt(2.0));
+        const vector tC = acousticFormulas::stickTraction
+        (
+            tL, tR, vL, vR, n, fn*Zp, ft*Zs
+        );
+        check("own impedances: t_x = t^L_x", tC.x(), tL.x());
+        check("own impedances: t_y = t^L_y", tC.y(), tL.y());
+        check("own impedances: t_z = t^L_z", tC.z(), tL.z());
+        const vector tWave = acousticFormulas::stickTraction
+        (
+            tL, tR, vL, vR, n, Zp, Zs
+        );
+        const bool waveOff = mag(tWave - tL) > 0.01*mag(dt);
+        Info<< "    " << (waveOff ? "PASS" : "FAIL")
+            << " wave impedances: t^C off t^L by " << mag(tWave - tL)
+            << " (more than 1 % of |[t]| " << mag(dt) << ")" << endl;
+        if (!waveOff) ++nFailed;
+
+        // The F flux's velocity 1/2 (v^L + v^R) + the traction-jump term
+        // with each part divided by Z/factor: v^L
+        const scalar gn =
+            acousticFormulas::jumpUpwindFactor
+            (
+                dtn, dvn, Zp, acousticFormulas::compressiveJumpLowerBound
+            );
+        const scalar gt =
+            acousticFormulas::jumpUpwindFactor
+            (
+                dtt, dvt, Zs, acousticFormulas::compressiveJumpLowerBound
+            );
+        const vector vC
+        (
+            0.5*(vL + vR) + (gn/(2*Zp))*dtn*n
+          + (gt/(2*Zs))*(dt - dtn*n)
+        );
+        check("own impedances: F flux velocity x = v^L_x", vC.x(), vL.x());
+        check("own impedances: F flux velocity y = v^L_y", vC.y(), vL.y());
+
+        // The bounds: a jump of a quarter of the wave's impedance takes
+        // half of it; one above the wave's takes the wave's in the
+        // traction and its own in the F flux (the slow-mode rule)
+        // (an opening edge, lower bound 1: the wave's impedance in the
+        // traction, the slow-mode factor in the F flux)
+        const scalar lower = acousticFormulas::compressiveJumpLowerBound;
+        check("traction factor, own impedance Z/4",
+            acousticFormulas::jumpTractionFactor(0.05, -0.1, 2, lower), 0.5);
+        check("traction factor, own impedance 3 Z",
+            acousticFormulas::jumpTractionFactor(0.6, -0.1, 2, lower), 1);
+        check("traction factor, own impedance Z/4, lower bound 1",
+            acousticFormulas::jumpTractionFactor(0.05, -0.1, 2, 1), 1);
+        check("F flux factor, own impedance Z/4",
+            acousticFormulas::jumpUpwindFactor(0.05, -0.1, 2, lower), 2);
+        check("F flux factor, own impedance 3 Z",
+            acousticFormulas::jumpUpwindFactor(0.6, -0.1, 2, lower), 1.0/3.0);
+        check("F flux factor, own impedance Z/4, lower bound 1",
+            acousticFormulas::jumpUpwindFactor(0.05, -0.1, 2, 1),
+            acousticFormulas::slowModeFactor(0.05, -0.1, 2));
+    }
+
     Info<< "Pressure-dominated contact stick, Z_L = 2, Z_R = 3" << endl;
     {
         // The acoustic case above with area ratios 1.2 / 0.8 and volumetric

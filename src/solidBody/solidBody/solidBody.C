@@ -774,13 +774,13 @@ struct stickTraction
         const Foam::scalar lower
     ) const
     {
-        using namespace Foam::acousticFormulas;
-        const Foam::scalar s = compressedFaceFactor(Lambda);
-        return Foam::acousticFormulas::stickTraction
+        namespace AF = Foam::acousticFormulas;
+        const Foam::scalar s = AF::compressedFaceFactor(Lambda);
+        return AF::stickTraction
         (
             tL, tR, vL, vR, n,
-            s*Zp*jumpTractionFactor(dtn, dvn, s*Zp, lower),
-            s*Zs*jumpTractionFactor(dtt, dvt, s*Zs, lower)
+            s*Zp*AF::jumpTractionFactor(dtn, dvn, s*Zp, lower),
+            s*Zs*AF::jumpTractionFactor(dtt, dvt, s*Zs, lower)
         );
     }
 };

@@ -46,7 +46,8 @@ void boundarySlopes
     const Foam::stageResidual& R,
     const Foam::scalar Zp,
     const Foam::scalar Zs,
-    Foam::List<Foam::fluxStateGradient>& G
+    Foam::List<Foam::fluxStateGradient>& G,
+    const Foam::UList<bool>* mask
 )
 {
     using namespace Foam;
@@ -71,6 +72,10 @@ void boundarySlopes
         forAll(sf.point, s)
         {
             const label i = sf.point[s];
+            if (mask && !(*mask)[i])
+            {
+                continue;
+            }
             const label b = index[i];
             const scalar w = sf.nbrWeight[s];
             const fluxState& qi = q[i];
@@ -116,6 +121,10 @@ void boundarySlopes
     // up to the map of the whole)
     forAll(bp, b)
     {
+        if (mask && !(*mask)[bp[b]])
+        {
+            continue;
+        }
         fluxStateGradient& Gi = G[bp[b]];
         for (label k = 0; k < 3; ++k)
         {
@@ -176,7 +185,8 @@ void Foam::greenGaussGradient
     List<fluxStateGradient>& G,
     const stageResidual* R,
     const scalar Zp,
-    const scalar Zs
+    const scalar Zs,
+    const UList<bool>* mask
 )
 {
     const labelList& es = dual.edgeStart();
@@ -243,7 +253,7 @@ void Foam::greenGaussGradient
     // the jumps: before the processor sums)
     if (R)
     {
-        boundarySlopes(dual, q, *R, Zp, Zs, G);
+        boundarySlopes(dual, q, *R, Zp, Zs, G, mask);
     }
 
     if (Pstream::parRun())

@@ -136,8 +136,8 @@ Foam::bodyScheme::bodyScheme
         {
             "secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw",
             "energyStable", "riemannSolver", "FStabilisation",
-            "onsetStabilisation", "shockStabilisation", "boundarySlope", "contactRotation",
-            "deformedPressure", "boundaryExtrapolation"
+            "onsetStabilisation", "shockStabilisation", "boundarySlope",
+            "contactRotation", "deformedPressure", "boundaryExtrapolation"
         }
     );
 

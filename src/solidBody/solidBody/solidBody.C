@@ -423,6 +423,19 @@ Foam::label Foam::solidBody::nGlobalPoints() const
 }
 
 
+namespace
+{
+
+// A patch whose Riemann traction is a contact load: a contact pair's or a
+// rigid wall's (the onset zone's points, onsetStabilisation)
+bool contactLoaded(const Foam::solidBoundaryCondition& bc)
+{
+    return bc.type() == "contact" || bc.type() == "rigidWall";
+}
+
+} // End anonymous namespace
+
+
 const Foam::scalar Foam::solidBody::planarImpactAngle = 10;
 
 // (A1 at 128 cells on tets, cfl 1.5: 2 transits left a 2.6 % overshoot,
@@ -502,8 +515,7 @@ void Foam::solidBody::chooseFromScene
     bool contactPatches = false;
     for (const solidBoundaryCondition& bc : bcs_)
     {
-        contactPatches =
-            contactPatches || bc.type() == "contact" || bc.type() == "rigidWall";
+        contactPatches = contactPatches || contactLoaded(bc);
     }
     scheme_->chooseFromScene
     (
@@ -610,7 +622,7 @@ void Foam::solidBody::readOnsetStarts(const dictionary& state)
 }
 
 
-void Foam::solidBody::updateOnsetZone()
+bool Foam::solidBody::updateOnsetZone()
 {
     const label nPts = mesh_.nPoints();
     const labelList& es = dual_.edgeStart();
@@ -653,11 +665,7 @@ void Foam::solidBody::updateOnsetZone()
     for (const solidBoundaryCondition& bc : bcs_)
     {
         const label patchi = bc.patchi();
-        if
-        (
-            (bc.type() != "contact" && bc.type() != "rigidWall")
-         || !residual_.boundarySet[patchi]
-        )
+        if (!contactLoaded(bc) || !residual_.boundarySet[patchi])
         {
             continue;
         }
@@ -677,8 +685,11 @@ void Foam::solidBody::updateOnsetZone()
     }
 
     // The zone's core: loaded for less than the onset's duration
+    // (after the onsets, nearly every stage: an empty zone, whose stage is
+    // the central F flux's and needs no pass over the edges)
     List<bool>& core = onsetZonePoint_;
     core = false;
+    bool anyCore = false;
     forAll(bp, b)
     {
         const label i = bp[b];
@@ -689,6 +700,11 @@ void Foam::solidBody::updateOnsetZone()
         }
         onsetStart_[b] = min(onsetStart_[b], t);
         core[i] = (t - onsetStart_[b] < onsetDuration_[b]);
+        anyCore = anyCore || core[i];
+    }
+    if (!returnReduce(anyCore, orOp<bool>()))
+    {
+        return false;
     }
 
     // One layer of neighbours (a struck point's own edges alone left a
@@ -714,6 +730,7 @@ void Foam::solidBody::updateOnsetZone()
     {
         onsetZoneEdge_[e] = onsetZonePoint_[es[e]] || onsetZonePoint_[ee[e]];
     }
+    return true;
 }
 
 
@@ -1052,11 +1069,8 @@ void Foam::solidBody::addInteriorFluxes
     // Riemann boundary slopes on the onset zone only (not with multirate
     // stepping, whose levels take their edges in turns)
     const bool onsetZone =
-        scheme_->onsetStabilisation() && !scheme_->FStabilisation() && !edges;
-    if (onsetZone)
-    {
-        updateOnsetZone();
-    }
+        scheme_->onsetStabilisation() && !scheme_->FStabilisation() && !edges
+     && updateOnsetZone();
     const bool* __restrict__ zoneEdge =
         onsetZone ? onsetZoneEdge_.cdata() : nullptr;
     const bool upwindF = scheme_->FStabilisation() || onsetZone;

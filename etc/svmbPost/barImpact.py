@@ -74,6 +74,19 @@ def probe_x(region):
     return float(xs[0])
 
 
+def linear_exact(M1, M2, rho1, rho2, v0, v2, gap, tEnd, L1, L2):
+    """The exact linear history t,vx1,sxx1,ux1,vx2,sxx2,ux2 with Bar Two
+    moving at v2: evaluated in Bar Two's frame at the closing speed v0,
+    then brought back (velocities + v2, displacements + v2 t)"""
+    exact, _, _ = barImpactExact.linear_history(
+        M1, M2, rho1, rho2, v0, gap, tEnd, L1=L1, L2=L2)
+    exact[:, 1] += v2
+    exact[:, 4] += v2
+    exact[:, 3] += v2 * exact[:, 0]
+    exact[:, 6] += v2 * exact[:, 0]
+    return exact
+
+
 def main():
     M1, rho1, v1 = material('barOne')
     M2, rho2, v2 = material('barTwo')
@@ -150,13 +163,7 @@ def main():
 
     exact = None
     if s == 0:
-        exact, dt, _ = barImpactExact.linear_history(
-            M1, M2, rho1, rho2, v0, gap, tEnd, L1=L1, L2=L2)
-        # back from Bar Two's frame: velocities + v2, displacements + v2 t
-        exact[:, 1] += v2
-        exact[:, 4] += v2
-        exact[:, 3] += v2 * exact[:, 0]
-        exact[:, 6] += v2 * exact[:, 0]
+        exact = linear_exact(M1, M2, rho1, rho2, v0, v2, gap, tEnd, L1, L2)
         ex = {k: np.interp(t, exact[:, 0], exact[:, i])
               for i, k in enumerate(['t', 'vx1', 'sxx1', 'ux1', 'vx2', 'sxx2', 'ux2'])}
         L1 = {

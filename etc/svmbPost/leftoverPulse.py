@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """What a release leaves in two bars after they part (run in a bar-impact
 case directory after barImpactPost, benchmarks/leftoverPulse):
-    python3 -m svmbPost.leftoverPulse [label]
+    python3 -m svmbPost.leftoverPulse [case cells label]
 
 For linear bars the exact contact-face histories (barImpactExact) are taken
 to the run's end.  From the exact separation on, each bar's time is cut
@@ -16,7 +16,8 @@ on, whose captured fronts make the largest departure near their jumps
 the exact impulse of the contact stress (in % of its initial momentum
 m v0 for Bar One, of Bar One's for Bar Two).  Hugoniot bars (no exact
 history after separation) get the plot only.  Writes results/pulse.png and
-results/pulse.json and prints one markdown table row."""
+results/pulse.json and prints one markdown table row, headed by the case,
+its cells and a label (by default the directory's name, '-', 'tutorial')."""
 import json
 import os
 import sys
@@ -34,31 +35,24 @@ def section_area(region):
 
 
 def main():
-    label = sys.argv[1] if len(sys.argv) > 1 else 'tutorial'
+    name, cells, label = (sys.argv[1:4] if len(sys.argv) > 3 else
+                          (os.path.basename(os.getcwd()), '-', 'tutorial'))
     summary = json.load(open('results/summary.json'))
-    hist = np.genfromtxt('results/history.csv', delimiter=',', names=True)
+    hist = svmbPost.read_csv('results/history.csv')
     t = hist['t']
     M1, rho1, v1 = barImpact.material('barOne')
     M2, rho2, v2 = barImpact.material('barTwo')
-    a1, b1 = barImpact.extent('barOne')
-    a2, b2 = barImpact.extent('barTwo')
-    L1, L2, gap = b1 - a1, b2 - a2, a2 - b1
-    v0 = v1 - v2
-    s = summary.get('hugoniotS', 0)
-    c1, c2 = np.sqrt(M1 / rho1), np.sqrt(M2 / rho2)
-    trips = (2 * L1 / c1, 2 * L2 / c2)
-    name = os.path.basename(os.getcwd())
+    (L1, L2), gap, v0 = summary['lengths'], summary['gap'], summary['v0']
+    s = summary['hugoniotS']
+    trips = (2 * L1 / np.sqrt(M1 / rho1), 2 * L2 / np.sqrt(M2 / rho2))
     result = {'case': name, 'label': label, 'v0': v0, 'roundTrips': trips}
 
     exact = None
     rows = ['-', '-']
     momentum = '-'
     if s == 0:
-        import barImpactExact
-        exact, _, _ = barImpactExact.linear_history(
-            M1, M2, rho1, rho2, v0, gap, float(t[-1]), L1=L1, L2=L2)
-        exact[:, 1] += v2
-        exact[:, 4] += v2
+        exact = barImpact.linear_exact(M1, M2, rho1, rho2, v0, v2, gap,
+                                       float(t[-1]), L1, L2)
         tSep = summary['separationExact']
         result['separationExact'] = tSep
         departures = []
@@ -100,8 +94,8 @@ def main():
     json.dump(result, open('results/pulse.json', 'w'), indent=2)
     stats = svmbPost.run_statistics()
     print('| %s | %s | %s | %s / %s | %s | %.1f |'
-          % (name.split('-')[0], name.split('-')[1], label, rows[0], rows[1],
-             momentum, stats['wallTime']))
+          % (name, cells, label, rows[0], rows[1], momentum,
+             stats['wallTime']))
 
     try:
         import matplotlib
@@ -120,9 +114,9 @@ def main():
             ax[i].set_ylabel(lab)
             ax[i].legend(fontsize=8)
         ax[1].set_xlabel('t')
-        fig.suptitle('%s: contact-face histories to t = %g (%s)'
-                     % (name, t[-1], label))
-        fig.savefig('results/pulse.png', dpi=110)
+        svmbPost.save_history_plot(
+            fig, 'contact-face histories to t = %g (%s)' % (t[-1], label),
+            stats, 'results/pulse.png')
     except ImportError:
         print('leftoverPulse: matplotlib not available, no plot')
 

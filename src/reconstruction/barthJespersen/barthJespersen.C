@@ -23,6 +23,18 @@ void Foam::limiters::barthJespersen::limit
     List<fluxStateGradient>& G
 ) const
 {
+    limitPoints(dual, q, G, nullptr);
+}
+
+
+void Foam::limiters::barthJespersen::limitPoints
+(
+    const dualMesh& dual,
+    const UList<fluxState>& q,
+    List<fluxStateGradient>& G,
+    const UList<bool>* only
+) const
+{
     const labelList& es = dual.edgeStart();
     const labelList& ee = dual.edgeEnd();
     const labelList& pointEdgeStart = dual.pointEdgeStart();
@@ -112,10 +124,18 @@ void Foam::limiters::barthJespersen::limit
     // extrema over them (at most 1)
     for (label i = 0; i < nPts; ++i)
     {
+        const label s = parallel ? sharedIndex_[i] : -1;
+        if (only && !(*only)[i])
+        {
+            if (s >= 0)
+            {
+                sharedPhi_[s] = 1.0;
+            }
+            continue;
+        }
         fluxStateGradient& g = G[i];
         const point& Xi = X[i];
         const fluxState& qi = q[i];
-        const label s = parallel ? sharedIndex_[i] : -1;
         fluxIncrement dHi, dLo;
         fluxState lo(qi), hi(qi);
         dHi = gradientScalar(0);

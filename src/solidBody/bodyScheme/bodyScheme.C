@@ -109,6 +109,8 @@ Foam::bodyScheme::bodyScheme
     dict_(solidProperties, dictionary(fileName("scheme"))),
     shockFromScene_(false),
     FStabFromScene_(false),
+    onsetFromScene_(false),
+    plastic_(false),
     limiterFromScene_(false),
     extrapolationFromScene_(false)
 {
@@ -250,28 +252,33 @@ Foam::bodyScheme::bodyScheme
     // contact onset on the edges of the points that have just closed and
     // their neighbours (solidBody::updateOnsetZone): with the central F
     // flux alone a struck point relaxes to its new state like a mass on a
-    // spring, and its face overshoots by 19-24 % (A1, a bar on a wall).
-    // The same bodies as the upwind F flux: not plastic ones, whose flow
-    // it damps, nor nearly incompressible ones, whose pressure it
+    // spring, and its face overshoots by 19-24 % (A1, a bar on a wall;
+    // a plastic bar on a wall 15.5 % on tets, 9.8 % on hexahedra).
+    // Plastic bodies too: the upwind F flux damps their flow, but the
+    // zone's few stages per point cost a copper bar on a wall a third
+    // more numerical dissipation, 0.45 -> 0.59 % of E0, for an onset
+    // within 3 % (doc/results.md, "Contact onset in plastic bodies").
+    // Not nearly incompressible bodies, whose pressure it
     // checkerboards (C3: 15 % of the points pressure extrema instead of
     // 6 %), nor pressure-dominated ones (Hugoniot or shear-free: their
     // planar impacts get the upwind F flux everywhere, and with it on the
     // zone only, Barth-Jespersen let a Hugoniot bar's step collapse after
     // its release from a wall, as with the term everywhere).  Decided once
     // the scene is known: contact or wall patches, the upwind F flux off
-    // and a limiter (unlimited, the Riemann boundary slopes crush a struck
-    // face) (chooseFromScene)
+    // and, for elastic bodies, a limiter (unlimited, the Riemann boundary
+    // slopes crushed A3's struck face; plastic bodies, unlimited on
+    // tetrahedra and parallelepipeds, limit the zone's points with
+    // Barth-Jespersen: solidBody::onsetLimiter_) (chooseFromScene)
     const bool pressureDominated = m.hugoniot() || m.shearFree();
     onsetFromScene_ =
-        automatic("onsetStabilisation") && !plastic && !nearlyIncompressible
+        automatic("onsetStabilisation") && !nearlyIncompressible
      && !pressureDominated;
+    plastic_ = plastic;
     onsetStabilisation_ = choose
     (
         "onsetStabilisation", false,
         onsetFromScene_
       ? string("no contact or rigid-wall patch")
-      : plastic
-      ? string("plastic: the upwind F flux damps the plastic flow")
       : nearlyIncompressible
       ? string("nearly incompressible: the upwind F flux checkerboards the"
         " pressure")
@@ -636,15 +643,24 @@ void Foam::bodyScheme::chooseFromScene
     if (onsetFromScene_)
     {
         onsetFromScene_ = false;
-        const bool unlimited = secondOrder_ && limiter_ == "none";
+        const bool unlimited =
+            secondOrder_ && limiter_ == "none" && !plastic_;
         onsetStabilisation_ =
             contactPatches && !FStabilisation_ && !unlimited;
         setChoice
         (
             "onsetStabilisation",
             onsetStabilisation_
-          ? "yes  (auto: contact or wall patches: the upwind F flux on the"
-            " points that have just closed, for onset without overshoot)"
+          ? string
+            (
+                "yes  (auto: contact or wall patches: the upwind F flux on"
+                " the points that have just closed, for onset without"
+                " overshoot"
+            )
+          + (
+                secondOrder_ && limiter_ == "none"
+              ? "; Barth-Jespersen on those points)" : ")"
+            )
           : FStabilisation_
           ? "no  (auto: the upwind F flux is on everywhere)"
           : unlimited

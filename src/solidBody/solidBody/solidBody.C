@@ -1139,8 +1139,8 @@ void Foam::solidBody::addInteriorFluxes
         // from step to step (a plastic bar on a wall, hexahedra: 12.4 %
         // onset overshoot with the zone, 9.8 % without it); Barth-
         // Jespersen on the zone's points alone, for the zone's few
-        // stages, takes it to 2.8 % (doc/results.md, "Contact onset in
-        // plastic bodies")
+        // stages, takes it to 2.2 % (doc/results.md, "Contact onset
+        // where the F flux is central")
         if (onsetZone && onsetLimiter_)
         {
             onsetLimiter_->limitPoints(dual_, q_, G_, &onsetZonePoint_);

@@ -650,8 +650,8 @@ void Foam::bodyScheme::chooseFromScene
         // the separation a front edge shortened steadily, to 37 % of its
         // length by 1 s (66 % without the zone; doc/results.md, "Contact
         // onset where the F flux is central")
-        const bool unlimited =
-            secondOrder_ && limiter_ == "none" && !plastic_;
+        const bool noLimiter = secondOrder_ && limiter_ == "none";
+        const bool unlimited = noLimiter && !plastic_;
         const bool plasticCurved = plastic_ && !planeWave;
         onsetStabilisation_ =
             contactPatches && !FStabilisation_ && !unlimited
@@ -666,10 +666,7 @@ void Foam::bodyScheme::chooseFromScene
                 " the points that have just closed, for onset without"
                 " overshoot"
             )
-          + (
-                secondOrder_ && limiter_ == "none"
-              ? "; Barth-Jespersen on those points)" : ")"
-            )
+          + (noLimiter ? "; Barth-Jespersen on those points)" : ")")
           : FStabilisation_
           ? "no  (auto: the upwind F flux is on everywhere)"
           : unlimited

@@ -526,11 +526,7 @@ void Foam::solidBody::chooseFromScene
     {
         limiter_ = limiter::New(scheme_->limiter(), scheme_->dict());
     }
-    if
-    (
-        scheme_->secondOrder() && scheme_->onsetStabilisation()
-     && !scheme_->FStabilisation() && limiter_->type() == "none"
-    )
+    if (scheme_->onsetZoneLimited())
     {
         onsetLimiter_.reset(new limiters::barthJespersen(scheme_->dict()));
     }

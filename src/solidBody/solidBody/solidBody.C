@@ -258,6 +258,7 @@ void Foam::solidBody::readBookkeeping()
         nDissipatingRetries_ =
             state->getOrDefault<label>("dissipatingRetries", 0);
         readOnsetStarts(*state);
+        readHeldClosed(*state);
     }
     else
     {
@@ -334,6 +335,8 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     invalidValue_(0),
     invalidQuantity_()
 {
+    heldLimit_ = false;
+
     // The dual mesh holds all the solver needs: free OpenFOAM's
     // demand-driven geometry and addressing, and the point lists of the
     // internal faces (kept where the pressure acts on the deformed dual)
@@ -530,13 +533,68 @@ void Foam::solidBody::chooseFromScene
     {
         onsetLimiter_.reset(new limiters::barthJespersen(scheme_->dict()));
     }
-    // (the boundary states are kept for the Riemann boundary slopes, and
-    // for the onset zone's loaded points)
+    // With the central F flux the points closed on a wall or contact face
+    // (or driven) have a mode of their own, which sets their step
+    // (stableTimeStep.H)
+    stableStep_->useCentralFFlux(!scheme_->FStabilisation());
+    heldLimit_ = false;
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        heldLimit_ =
+            heldLimit_ || (bc.holdsVelocity() && !scheme_->FStabilisation());
+    }
+    // (the boundary states are kept for the Riemann boundary slopes, for
+    // the onset zone's loaded points and for the closed points' step)
     residual_.setBoundarySize
     (
         dual_,
         scheme_->riemannBoundarySlope() || scheme_->onsetStabilisation()
+     || heldLimit_
     );
+}
+
+
+template<class Type>
+Foam::List<Type> Foam::solidBody::gatherLists(const UList<Type>& mine)
+{
+    List<List<Type>> lists(Pstream::nProcs());
+    lists[Pstream::myProcNo()] = mine;
+    Pstream::gatherList(lists);
+    Pstream::scatterList(lists);
+    return ListListOps::combine<List<Type>>(lists, accessOp<List<Type>>());
+}
+
+
+Foam::labelList Foam::solidBody::boundaryPointsAt
+(
+    const UList<point>& positions
+) const
+{
+    // Each boundary point at one of the positions (within a millionth of
+    // its shortest edge's scale: decomposePar and reconstructPar may round
+    // the coordinates) takes its index
+    const labelList& bp = dual_.boundaryPoints();
+    const pointField& X = mesh_.points();
+    const boundBox box(X, false);
+    const scalar tol = 1e-9*box.mag() + VSMALL;
+    labelList at(bp.size(), -1);
+    if (positions.empty())
+    {
+        return at;
+    }
+    forAll(bp, b)
+    {
+        const point& x = X[bp[b]];
+        forAll(positions, k)
+        {
+            if (magSqr(positions[k] - x) < sqr(tol))
+            {
+                at[b] = k;
+                break;
+            }
+        }
+    }
+    return at;
 }
 
 
@@ -547,8 +605,6 @@ void Foam::solidBody::writeOnsetStarts(dictionary& state) const
     // reconstructPar's copy of any processor's state holds all of it
     const labelList& bp = dual_.boundaryPoints();
     const pointField& X = mesh_.points();
-    List<pointField> positions(Pstream::nProcs());
-    List<scalarField> starts(Pstream::nProcs());
     DynamicList<point> myPositions;
     DynamicList<scalar> myStarts;
     forAll(onsetStart_, b)
@@ -559,25 +615,96 @@ void Foam::solidBody::writeOnsetStarts(dictionary& state) const
             myStarts.append(onsetStart_[b]);
         }
     }
-    positions[Pstream::myProcNo()] = myPositions;
-    starts[Pstream::myProcNo()] = myStarts;
-    Pstream::gatherList(positions);
-    Pstream::scatterList(positions);
-    Pstream::gatherList(starts);
-    Pstream::scatterList(starts);
     // (full precision: the start times decide when an onset ends)
     const unsigned int precision = IOstream::defaultPrecision(17);
-    state.add
-    (
-        "onsetPositions",
-        ListListOps::combine<pointField>(positions, accessOp<pointField>())
-    );
-    state.add
-    (
-        "onsetStarts",
-        ListListOps::combine<scalarField>(starts, accessOp<scalarField>())
-    );
+    state.add("onsetPositions", gatherLists<point>(myPositions));
+    state.add("onsetStarts", gatherLists<scalar>(myStarts));
     IOstream::defaultPrecision(precision);
+}
+
+
+void Foam::solidBody::writeHeldClosed(dictionary& state) const
+{
+    // The closed held points by their reference positions, as the onset
+    // starts: the restarted run's first step takes the same step
+    updateHeldClosed();
+    const labelList& bp = dual_.boundaryPoints();
+    const pointField& X = mesh_.points();
+    DynamicList<point> myPositions;
+    forAll(bp, b)
+    {
+        if (heldClosed_[bp[b]])
+        {
+            myPositions.append(X[bp[b]]);
+        }
+    }
+    const unsigned int precision = IOstream::defaultPrecision(17);
+    state.add("closedPositions", gatherLists<point>(myPositions));
+    IOstream::defaultPrecision(precision);
+}
+
+
+void Foam::solidBody::readHeldClosed(const dictionary& state)
+{
+    const labelList at
+    (
+        boundaryPointsAt
+        (
+            state.getOrDefault<pointField>("closedPositions", pointField())
+        )
+    );
+    const labelList& bp = dual_.boundaryPoints();
+    heldClosed_.setSize(mesh_.nPoints());
+    heldClosed_ = false;
+    forAll(bp, b)
+    {
+        heldClosed_[bp[b]] = (at[b] >= 0);
+    }
+}
+
+
+void Foam::solidBody::updateHeldClosed() const
+{
+    // The points closed in the last stage on patches that hold the
+    // velocity (a traction on one of their sub-faces).  Before the first
+    // stage (no patch set) the flags stay as they are: none at the start,
+    // the written ones on a restart (readHeldClosed)
+    bool anySet = false;
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        anySet = anySet || residual_.boundarySet[bc.patchi()];
+    }
+    if (heldClosed_.size() != mesh_.nPoints())
+    {
+        heldClosed_.setSize(mesh_.nPoints());
+        heldClosed_ = false;
+    }
+    if (!returnReduce(anySet, orOp<bool>()))
+    {
+        return;
+    }
+    heldClosed_ = false;
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        const label patchi = bc.patchi();
+        if (!bc.holdsVelocity() || !residual_.boundarySet[patchi])
+        {
+            continue;
+        }
+        const labelList& sp = dual_.subFaces(patchi).point;
+        const List<vector>& tB = residual_.boundaryTraction[patchi];
+        forAll(tB, s)
+        {
+            if (magSqr(tB[s]) > 0)
+            {
+                heldClosed_[sp[s]] = true;
+            }
+        }
+    }
+    if (Pstream::parRun())
+    {
+        syncTools::syncPointList(mesh_, heldClosed_, orEqOp<bool>(), false);
+    }
 }
 
 
@@ -604,24 +731,14 @@ void Foam::solidBody::readOnsetStarts(const dictionary& state)
         return;
     }
 
-    // Each boundary point at one of the positions (within a millionth of
-    // its shortest edge's scale: decomposePar and reconstructPar may round
-    // the coordinates) takes its start time
-    const labelList& bp = dual_.boundaryPoints();
-    const pointField& X = mesh_.points();
-    const boundBox box(X, false);
-    const scalar tol = 1e-9*box.mag() + VSMALL;
-    onsetStart_.setSize(bp.size(), VGREAT);
-    forAll(bp, b)
+    // Each boundary point at one of the positions takes its start time
+    const labelList at(boundaryPointsAt(positions));
+    onsetStart_.setSize(at.size(), VGREAT);
+    forAll(at, b)
     {
-        const point& x = X[bp[b]];
-        forAll(positions, k)
+        if (at[b] >= 0)
         {
-            if (magSqr(positions[k] - x) < sqr(tol))
-            {
-                onsetStart_[b] = starts[k];
-                break;
-            }
+            onsetStart_[b] = starts[at[b]];
         }
     }
 }
@@ -1973,7 +2090,15 @@ Foam::scalar Foam::solidBody::localStableDeltaT
         }
         vMax = Foam::sqrt(returnReduce(vMax, maxOp<scalar>()));
     }
-    return stableStep_->deltaT(F_, Hc(), Jc(), vMax, pointDeltaT);
+    if (heldLimit_)
+    {
+        updateHeldClosed();
+    }
+    return stableStep_->deltaT
+    (
+        F_, Hc(), Jc(), vMax, pointDeltaT,
+        heldLimit_ ? &heldClosed_ : nullptr
+    );
 }
 
 
@@ -2182,6 +2307,10 @@ void Foam::solidBody::write()
     if (scheme_->onsetStabilisation())
     {
         writeOnsetStarts(state);
+    }
+    if (heldLimit_)
+    {
+        writeHeldClosed(state);
     }
     writeUniformState("bodyState", mesh_, state);
 }

@@ -55,6 +55,11 @@ Foam::scalar maxEigenValue(const Foam::symmTensor& t)
 // "The time step")
 const Foam::scalar boundaryJWeight = 0.5*(Foam::sqrt(5.0) - 1);
 
+// The margin of a held point's own damping rate with the central F flux
+// (stableTimeStep.H): that of the upwind flux's 1D wall chain over the
+// estimate r_i, 0.949/0.5
+const Foam::scalar heldMargin = 1.9;
+
 } // End anonymous namespace
 
 
@@ -75,7 +80,9 @@ Foam::stableTimeStep::stableTimeStep
     stretch2_(),
     limitingPoint_(-1),
     rMomentum_(),
-    dtRefMin_(GREAT)
+    dtRefMin_(GREAT),
+    heldPoint_(),
+    heldRate_()
 {
     const label nPts = dual.nPoints();
 
@@ -103,9 +110,34 @@ Foam::stableTimeStep::stableTimeStep
     S = Sint;
 
     boolList normalConstrained(dual.mesh().boundaryMesh().size(), false);
+    boolList holdsVelocity(normalConstrained.size(), false);
     for (const solidBoundaryCondition& bc : bcs)
     {
         normalConstrained[bc.patchi()] = bc.constrainsNormal();
+        holdsVelocity[bc.patchi()] = bc.holdsVelocity();
+    }
+    const scalar cp = material.cp();
+    const scalar cs = material.cs();
+
+    // A held point's own damping (times V): half its interior faces'
+    // impedances (as T, S), the holding faces' normal part in full
+    symmTensorField heldDamping(nPts, Zero);
+    List<bool> held(nPts, false);
+    forAll(holdsVelocity, patchi)
+    {
+        if (holdsVelocity[patchi])
+        {
+            const dualMesh::patchSubFaces& sf = dual.subFaces(patchi);
+            forAll(sf.point, s)
+            {
+                const scalar magA = mag(sf.area[s]);
+                if (magA > VSMALL)
+                {
+                    held[sf.point[s]] = true;
+                    heldDamping[sf.point[s]] += cp*sqr(sf.area[s])/magA;
+                }
+            }
+        }
     }
     DynamicList<label> bPoint;
     DynamicList<scalar> bMagA;
@@ -139,6 +171,11 @@ Foam::stableTimeStep::stableTimeStep
     if (Pstream::parRun())
     {
         const polyMesh& mesh = dual.mesh();
+        syncTools::syncPointList
+        (
+            mesh, heldDamping, plusEqOp<symmTensor>(), symmTensor(Zero)
+        );
+        syncTools::syncPointList(mesh, held, orEqOp<bool>(), false);
         syncTools::syncPointList(mesh, S, plusEqOp<scalar>(), 0.0);
         syncTools::syncPointList(mesh, Sint, plusEqOp<scalar>(), 0.0);
         syncTools::syncPointList
@@ -147,8 +184,6 @@ Foam::stableTimeStep::stableTimeStep
         );
     }
 
-    const scalar cp = material.cp();
-    const scalar cs = material.cs();
     const scalarField& V = dual.volumes();
 
     // Momentum: r = [c_s S + (c_p - c_s) lambda_max(T)]/V
@@ -157,6 +192,53 @@ Foam::stableTimeStep::stableTimeStep
     {
         rMomentum_[i] =
             (cs*S[i] + (cp - cs)*maxEigenValue(T[i]))/V[i];
+    }
+
+    // The held points' rate with the central F flux, heldMargin d_i, kept
+    // where it exceeds r_i (the edges summed again for these points: S
+    // and T hold the boundary faces too).  (Every processor takes part in
+    // the synchronisation, held points or not)
+    {
+        symmTensorField interior(nPts, Zero);
+        forAll(start, e)
+        {
+            const label i = start[e], j = end[e];
+            if (held[i] || held[j])
+            {
+                const symmTensor d
+                (
+                    0.5*magSf[e]*(cs*I + (cp - cs)*sqr(n[e]))
+                );
+                interior[i] += d;
+                interior[j] += d;
+            }
+        }
+        if (Pstream::parRun())
+        {
+            syncTools::syncPointList
+            (
+                dual.mesh(), interior, plusEqOp<symmTensor>(),
+                symmTensor(Zero)
+            );
+        }
+        DynamicList<label> heldPoint;
+        DynamicList<scalar> heldRate;
+        forAll(held, i)
+        {
+            if (!held[i])
+            {
+                continue;
+            }
+            const scalar rate =
+                heldMargin*maxEigenValue(interior[i] + heldDamping[i])/V[i];
+            if (rate > rMomentum_[i])
+            {
+                heldPoint.append(i);
+                heldRate.append(rate);
+            }
+        }
+        heldPoint_.transfer(heldPoint);
+        heldRate_.transfer(heldRate);
     }
 
     // J stabilisation: Omega dJ/dt gains sum_j S_ij (Sigma_J,j - Sigma_J,i)
@@ -198,16 +280,61 @@ Foam::stableTimeStep::stableTimeStep
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::stableTimeStep::useCentralFFlux(const bool central)
+{
+    if (!central)
+    {
+        heldPoint_.clear();
+        heldRate_.clear();
+    }
+}
+
+
+void Foam::stableTimeStep::limitHeldPoints
+(
+    const UList<bool>& closed,
+    const UList<scalar>& waveFactor,
+    scalar& dt,
+    UList<scalar>* pointDeltaT
+) const
+{
+    forAll(heldPoint_, k)
+    {
+        const label i = heldPoint_[k];
+        if (!closed[i])
+        {
+            continue;
+        }
+        const scalar dti =
+            stepOfRate
+            (
+                heldRate_[k]*(waveFactor.empty() ? 1 : waveFactor[k])
+            );
+        if (pointDeltaT)
+        {
+            (*pointDeltaT)[i] = min((*pointDeltaT)[i], dti);
+        }
+        if (dti < dt)
+        {
+            dt = dti;
+            limitingPoint_ = i;
+        }
+    }
+}
+
+
 Foam::scalar Foam::stableTimeStep::deltaT
 (
     const UList<tensor>& F,
     const UList<tensor>& H,
     const UList<scalar>& J,
     const scalar vMax,
-    UList<scalar>* pointDeltaT
+    UList<scalar>* pointDeltaT,
+    const UList<bool>* closed
 ) const
 {
     const bool hugoniot = material_.hugoniot();
+    const bool heldClosed = closed && heldPoint_.size();
     if (!largeStrain_ && !hugoniot)
     {
         // Small strain without a Hugoniot pressure: constant stiffness (its
@@ -220,7 +347,12 @@ Foam::scalar Foam::stableTimeStep::deltaT
                 (*pointDeltaT)[i] = stepOfRate(rMomentum_[i]);
             }
         }
-        return dtRefMin_;
+        scalar dt = dtRefMin_;
+        if (heldClosed)
+        {
+            limitHeldPoints(*closed, UList<scalar>(), dt, pointDeltaT);
+        }
+        return dt;
     }
 
     const scalar cp = material_.cp();
@@ -294,11 +426,12 @@ Foam::scalar Foam::stableTimeStep::deltaT
     }
     const scalar JFactor = 1/(material_.rho()*cp);
 
-    scalar dt = GREAT;
-    forAll(rMomentum_, i)
+    // Each point's wave speed relative to c_p and the state's stretch:
+    // the factor of its undeformed momentum rate
+    auto waveFactor = [&](const label i, scalar& c)
     {
         // Wave speed of the state relative to c_p
-        scalar c = shockFactor;
+        c = shockFactor;
         if (J[i] < 1)
         {
             c = max(c, material_.tangentWaveSpeed(J[i])/cp);
@@ -317,10 +450,16 @@ Foam::scalar Foam::stableTimeStep::deltaT
             stretch2 =
                 max(stretch2_[i]/max(min(detF2, 1.0), VSMALL), 1.0);
         }
+        return c*sqrt(stretch2);
+    };
 
+    scalar dt = GREAT;
+    forAll(rMomentum_, i)
+    {
         // Momentum: the wave speed times the stretch; J stabilisation:
         // k sum_j 2 S_ij/V with the state's tangent k
-        scalar r = rMomentum_[i]*c*sqrt(stretch2);
+        scalar c;
+        scalar r = rMomentum_[i]*waveFactor(i, c);
         if (!sJ_.empty())
         {
             const scalar k = (sqr(c)*rhoCp2 - 4.0/3.0*material_.mu()
@@ -337,6 +476,16 @@ Foam::scalar Foam::stableTimeStep::deltaT
             dt = dti;
             limitingPoint_ = i;
         }
+    }
+    if (heldClosed)
+    {
+        scalarField factor(heldPoint_.size(), 1.0);
+        forAll(heldPoint_, k)
+        {
+            scalar c;
+            factor[k] = waveFactor(heldPoint_[k], c);
+        }
+        limitHeldPoints(*closed, factor, dt, pointDeltaT);
     }
     return dt;
 }

@@ -219,6 +219,28 @@ void Foam::solidBoundaryConditions::rigidWall::prescribeDisplacements
 }
 
 
+void Foam::solidBoundaryConditions::rigidWall::markClosing
+(
+    const UList<vector>& u,
+    const UList<fluxState>& q,
+    const scalar t,
+    const scalar dt,
+    UList<bool>& closing
+) const
+{
+    const pointField& X = dual_.mesh().points();
+    for (const label i : dual_.subFaces(patchi()).point)
+    {
+        const scalar approach =
+            -((fluxVelocity(q[i]) - velocity_) & normal_);
+        if (approach*dt >= gap(X[i] + u[i], t) - touch_)
+        {
+            closing[i] = true;
+        }
+    }
+}
+
+
 void Foam::solidBoundaryConditions::rigidWall::writeSummary
 (
     Ostream& os,

@@ -666,20 +666,23 @@ void Foam::solidBody::readHeldClosed(const dictionary& state)
 void Foam::solidBody::updateHeldClosed() const
 {
     // The points closed in the last stage on patches that hold the
-    // velocity (a traction on one of their sub-faces).  Before the first
-    // stage (no patch set) the flags stay as they are: none at the start,
-    // the written ones on a restart (readHeldClosed)
+    // velocity (a traction on one of their sub-faces), and those that will
+    // close within the coming step (a wall's gap closing within twice the
+    // last step, which may grow).  Before the first stage (no patch set):
+    // on a restart the written flags (readHeldClosed), at the start the
+    // points touching (the step that starts the contact is theirs)
     bool anySet = false;
     for (const solidBoundaryCondition& bc : bcs_)
     {
         anySet = anySet || residual_.boundarySet[bc.patchi()];
     }
+    anySet = returnReduce(anySet, orOp<bool>());
     if (heldClosed_.size() != mesh_.nPoints())
     {
         heldClosed_.setSize(mesh_.nPoints());
         heldClosed_ = false;
     }
-    if (!returnReduce(anySet, orOp<bool>()))
+    if (!anySet && restart_)
     {
         return;
     }
@@ -700,6 +703,11 @@ void Foam::solidBody::updateHeldClosed() const
                 heldClosed_[sp[s]] = true;
             }
         }
+    }
+    const scalar dt = anySet ? 2*runTime_.deltaTValue() : 0;
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        bc.markClosing(u_, q_, runTime_.value(), dt, heldClosed_);
     }
     if (Pstream::parRun())
     {

@@ -540,9 +540,9 @@ void Foam::solidBody::chooseFromScene
     heldLimit_ = false;
     for (const solidBoundaryCondition& bc : bcs_)
     {
-        heldLimit_ =
-            heldLimit_ || (bc.holdsVelocity() && !scheme_->FStabilisation());
+        heldLimit_ = heldLimit_ || bc.holdsVelocity();
     }
+    heldLimit_ = heldLimit_ && !scheme_->FStabilisation();
     // (the boundary states are kept for the Riemann boundary slopes, for
     // the onset zone's loaded points and for the closed points' step)
     residual_.setBoundarySize
@@ -551,6 +551,33 @@ void Foam::solidBody::chooseFromScene
         scheme_->riemannBoundarySlope() || scheme_->onsetStabilisation()
      || heldLimit_
     );
+}
+
+
+template<class Select>
+void Foam::solidBody::markLoaded
+(
+    const Select& select,
+    UList<bool>& loaded
+) const
+{
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        const label patchi = bc.patchi();
+        if (!select(bc) || !residual_.boundarySet[patchi])
+        {
+            continue;
+        }
+        const labelList& sp = dual_.subFaces(patchi).point;
+        const List<vector>& tB = residual_.boundaryTraction[patchi];
+        forAll(tB, s)
+        {
+            if (magSqr(tB[s]) > 0)
+            {
+                loaded[sp[s]] = true;
+            }
+        }
+    }
 }
 
 
@@ -687,23 +714,11 @@ void Foam::solidBody::updateHeldClosed() const
         return;
     }
     heldClosed_ = false;
-    for (const solidBoundaryCondition& bc : bcs_)
-    {
-        const label patchi = bc.patchi();
-        if (!bc.holdsVelocity() || !residual_.boundarySet[patchi])
-        {
-            continue;
-        }
-        const labelList& sp = dual_.subFaces(patchi).point;
-        const List<vector>& tB = residual_.boundaryTraction[patchi];
-        forAll(tB, s)
-        {
-            if (magSqr(tB[s]) > 0)
-            {
-                heldClosed_[sp[s]] = true;
-            }
-        }
-    }
+    markLoaded
+    (
+        [](const solidBoundaryCondition& bc) { return bc.holdsVelocity(); },
+        heldClosed_
+    );
     const scalar dt = anySet ? 2*runTime_.deltaTValue() : 0;
     for (const solidBoundaryCondition& bc : bcs_)
     {
@@ -799,23 +814,7 @@ bool Foam::solidBody::updateOnsetZone()
     // The points this stage's contact and wall Riemann states load
     List<bool>& loaded = onsetScratch_;
     loaded = false;
-    for (const solidBoundaryCondition& bc : bcs_)
-    {
-        const label patchi = bc.patchi();
-        if (!contactLoaded(bc) || !residual_.boundarySet[patchi])
-        {
-            continue;
-        }
-        const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi);
-        const List<vector>& tB = residual_.boundaryTraction[patchi];
-        forAll(sf.point, s)
-        {
-            if (magSqr(tB[s]) > 0)
-            {
-                loaded[sf.point[s]] = true;
-            }
-        }
-    }
+    markLoaded(contactLoaded, loaded);
     if (Pstream::parRun())
     {
         syncTools::syncPointList(mesh_, loaded, orEqOp<bool>(), false);

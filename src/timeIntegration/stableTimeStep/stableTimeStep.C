@@ -290,10 +290,11 @@ void Foam::stableTimeStep::useCentralFFlux(const bool central)
 }
 
 
+template<class WaveFactor>
 void Foam::stableTimeStep::limitHeldPoints
 (
     const UList<bool>& closed,
-    const UList<scalar>& waveFactor,
+    const WaveFactor& waveFactor,
     scalar& dt,
     UList<scalar>* pointDeltaT
 ) const
@@ -305,11 +306,7 @@ void Foam::stableTimeStep::limitHeldPoints
         {
             continue;
         }
-        const scalar dti =
-            stepOfRate
-            (
-                heldRate_[k]*(waveFactor.empty() ? 1 : waveFactor[k])
-            );
+        const scalar dti = stepOfRate(heldRate_[k]*waveFactor(i));
         if (pointDeltaT)
         {
             (*pointDeltaT)[i] = min((*pointDeltaT)[i], dti);
@@ -350,7 +347,10 @@ Foam::scalar Foam::stableTimeStep::deltaT
         scalar dt = dtRefMin_;
         if (heldClosed)
         {
-            limitHeldPoints(*closed, UList<scalar>(), dt, pointDeltaT);
+            limitHeldPoints
+            (
+                *closed, [](const label) { return 1.0; }, dt, pointDeltaT
+            );
         }
         return dt;
     }
@@ -479,13 +479,12 @@ Foam::scalar Foam::stableTimeStep::deltaT
     }
     if (heldClosed)
     {
-        scalarField factor(heldPoint_.size(), 1.0);
-        forAll(heldPoint_, k)
-        {
-            scalar c;
-            factor[k] = waveFactor(heldPoint_[k], c);
-        }
-        limitHeldPoints(*closed, factor, dt, pointDeltaT);
+        limitHeldPoints
+        (
+            *closed,
+            [&](const label i) { scalar c; return waveFactor(i, c); },
+            dt, pointDeltaT
+        );
     }
     return dt;
 }

@@ -138,6 +138,87 @@ def read_csv(path):
     return np.genfromtxt(path, delimiter=',', names=True)
 
 
+def bar_axis(d):
+    """The unit vector along d; exactly a coordinate axis when d lies
+    within 1e-9 of one, so that a bar along x reads its probes' x columns
+    unchanged (axial_probes)."""
+    d = np.asarray(d, dtype=float)
+    a = d / np.linalg.norm(d)
+    k = int(np.argmax(np.abs(a)))
+    if abs(abs(a[k]) - 1) < 1e-9:
+        a = np.zeros(3)
+        a[k] = 1.0 if d[k] > 0 else -1.0
+    return a
+
+
+def across(v, a):
+    """The part of the vector v across the unit vector a (its length)."""
+    v = np.asarray(v, dtype=float)
+    return float(np.linalg.norm(v - np.dot(v, a) * a))
+
+
+def bar_geometry(X, a):
+    """A body's extent along the unit vector a (the axial coordinates of
+    its ends, lo and hi), the largest distance of a point from the axis
+    through its centre, and the area of its section across a (the convex
+    hull of the points projected on the plane across a)."""
+    s = X @ a
+    lo, hi = float(s.min()), float(s.max())
+    # a frame across a: for a coordinate axis the other two axes, in order
+    k = int(np.argmin(np.abs(a)))
+    e1 = np.zeros(3)
+    e1[k] = 1.0
+    e1 -= np.dot(e1, a) * a
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(a, e1)
+    q = np.column_stack([X @ e1, X @ e2])
+    centre = 0.5 * (q.min(axis=0) + q.max(axis=0))
+    radius = float(np.sqrt(((q - centre)**2).sum(axis=1)).max())
+    # the hull by Andrew's monotone chain, its area by the shoelace formula
+    pts = sorted(set(map(tuple, q)))
+
+    def half(points):
+        chain = []
+        for p in points:
+            while len(chain) >= 2 and (
+                    (chain[-1][0] - chain[-2][0]) * (p[1] - chain[-2][1])
+                    - (chain[-1][1] - chain[-2][1]) * (p[0] - chain[-2][0])
+                    <= 0):
+                chain.pop()
+            chain.append(p)
+        return chain[:-1]
+    hull = np.array(half(pts) + half(pts[::-1]))
+    x, y = hull[:, 0], hull[:, 1]
+    area = 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    return lo, hi, radius, float(area)
+
+
+def axial_probes(P, a):
+    """Probe histories along the unit vector a (a bar's axis), under the
+    names of a bar along x: per probe k, 'vx<k>' the velocity along a,
+    'ux<k>' the displacement along a, 'sxx<k>' the normal stress
+    a.sigma.a; and 't'.  For a = (1 0 0) these are the x columns
+    themselves, to the bit."""
+    out = {'t': P['t']}
+    k = 0
+    while 'vx%d' % k in P.dtype.names:
+        c = lambda n: P['%s%d' % (n, k)]
+        out['vx%d' % k] = c('vx') * a[0] + c('vy') * a[1] + c('vz') * a[2]
+        out['ux%d' % k] = c('ux') * a[0] + c('uy') * a[1] + c('uz') * a[2]
+        out['sxx%d' % k] = (
+            c('sxx') * a[0] * a[0] + c('syy') * a[1] * a[1]
+            + c('szz') * a[2] * a[2]
+            + 2 * (c('sxy') * a[0] * a[1] + c('syz') * a[1] * a[2]
+                   + c('sxz') * a[0] * a[2]))
+        k += 1
+    return out
+
+
+def axial_momentum(E, a):
+    """A body's momentum along the unit vector a from its energy history."""
+    return E['px'] * a[0] + E['py'] * a[1] + E['pz'] * a[2]
+
+
 def save_history_plot(fig, what, summary, path='results/history.png'):
     """Title a probe-history figure with the case, what it shows and the
     run's size and wall time, and write it."""
@@ -161,8 +242,11 @@ def print_summary(summary, width=24):
 
 def _foam_dictionary(args):
     # (OpenFOAM warns on stdout when PWD is not the working directory, as
-    # after a chdir in the scripts that post-process a case)
-    return subprocess.run(['foamDictionary'] + args, capture_output=True,
+    # after a chdir in the scripts that post-process a case; full precision:
+    # by default it prints 6 digits, so a wall normal along (1 2 3) put the
+    # bar's struck face 4e-7 behind the wall)
+    return subprocess.run(['foamDictionary', '-precision', '17'] + args,
+                          capture_output=True,
                           text=True, env=dict(os.environ, PWD=os.getcwd()))
 
 

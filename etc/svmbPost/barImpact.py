@@ -7,13 +7,16 @@ velocities, bar lengths and gap, Hugoniot slope), the probe and energy
 histories from postProcessing/, the run figures from the newest complete
 time directory (uniform/runStatistics, contactState), and the exact solution
 from applications/utilities/barImpactExact (applied in the frame of Bar Two,
-so Bar Two may move too).  A case outside what the exact solution covers
-(bars not along x or not approaching, probes not at the contact faces, a
-plastic material) is refused with a message.  Elastic materials are
+so Bar Two may move too).  The bars may lie along any direction: the axis
+runs from the centre of Bar One to that of Bar Two, and velocities, stresses
+and displacements are taken along it (for bars along x, the x columns).
+A case outside what the exact solution covers (bars moving across their
+axis or not approaching, probes not at the contact faces, a plastic
+material) is refused with a message.  Elastic materials are
 evaluated by their acoustic impedance (lambda + 2 mu) and, with a Hugoniot
 pressure, by the Hugoniot plateau.  Writes
   results/history.csv   t,vx1,sxx1,ux1,vx2,sxx2,ux2 (the points initially at
-                        the centres of the contact faces)
+                        the centres of the contact faces; along the axis)
   results/history.png   computed against exact histories
   results/summary.json  L1 errors (time-averaged, normalised by v0 and by the
                         exact contact stress), plateaus, contact times,
@@ -46,32 +49,47 @@ def entry(path, key, default=None):
     return svmbPost.dict_entry(path, key, default, 'barImpactPost')
 
 
-def material(region):
+def points(region):
+    return svmbPost.read_points('constant/%s/polyMesh/points' % region)
+
+
+def axis():
+    """The bars' axis: from the centre of Bar One to that of Bar Two."""
+    centre = [0.5 * (X.min(axis=0) + X.max(axis=0))
+              for X in (points('barOne'), points('barTwo'))]
+    return svmbPost.bar_axis(centre[1] - centre[0])
+
+
+def material(region, a):
+    """The uniaxial modulus, density and initial velocity along a."""
     path = 'constant/%s/solidProperties' % region
     rho, M = svmbPost.uniaxial_material(path, refuse, 'barImpactPost')
-    v = [float(c) for c in entry(path, 'initialVelocity', '(0 0 0)')
-         .strip('()').split()]
-    if abs(v[1]) + abs(v[2]) > 1e-12 * max(abs(v[0]), 1e-300):
-        refuse('%s moves across the bar (initialVelocity %s)' % (region, v))
-    return M, rho, v[0]
+    v = np.array([float(c) for c in re.findall(
+        r'[-+0-9.eE]+', entry(path, 'initialVelocity', '(0 0 0)'))])
+    va = float(np.dot(v, a))
+    if svmbPost.across(v, a) > 1e-9 * max(abs(va), 1e-300):
+        refuse('%s moves across the bar (initialVelocity %s, axis %s)'
+               % (region, v, a))
+    return M, rho, va
 
 
-def extent(region):
-    """Bar extent along x and its cross-section size, from the mesh."""
-    X = svmbPost.read_points('constant/%s/polyMesh/points' % region)
-    lo, hi = X.min(axis=0), X.max(axis=0)
-    if max(hi[1] - lo[1], hi[2] - lo[2]) > hi[0] - lo[0]:
-        refuse('%s is not a bar along x (extent %s)' % (region, hi - lo))
-    return lo[0], hi[0]
+def extent(region, a):
+    """Bar extent along a, from the mesh."""
+    lo, hi, radius, _ = svmbPost.bar_geometry(points(region), a)
+    if radius > hi - lo:
+        refuse('%s is not a bar along %s (length %g, %g across)'
+               % (region, a, hi - lo, 2 * radius))
+    return lo, hi
 
 
-def probe_x(region):
+def probe_axial(region, a):
+    """The first probe's position along a."""
     loc = entry('constant/%s/solidProperties' % region, 'probes/locations',
                 '()')
     xs = re.findall(r'[-+0-9.eE]+', loc)
-    if not xs:
+    if len(xs) < 3:
         refuse('%s has no probe' % region)
-    return float(xs[0])
+    return float(np.dot([float(x) for x in xs[:3]], a))
 
 
 def linear_exact(M1, M2, rho1, rho2, v0, v2, gap, tEnd, L1, L2):
@@ -88,23 +106,25 @@ def linear_exact(M1, M2, rho1, rho2, v0, v2, gap, tEnd, L1, L2):
 
 
 def main():
-    M1, rho1, v1 = material('barOne')
-    M2, rho2, v2 = material('barTwo')
+    a = axis()
+    M1, rho1, v1 = material('barOne', a)
+    M2, rho2, v2 = material('barTwo', a)
     # The exact solution has Bar Two at rest: evaluate it in Bar Two's
     # frame with v0 = v1 - v2, then add v2 back (Galilean invariance)
     v0 = v1 - v2
     if not v0 > 0:
         refuse('the bars do not approach (Bar One at %g, Bar Two at %g)'
                % (v1, v2))
-    a1, b1 = extent('barOne')
-    a2, b2 = extent('barTwo')
+    a1, b1 = extent('barOne', a)
+    a2, b2 = extent('barTwo', a)
     if not a2 >= b1:
-        refuse('Bar Two does not lie after Bar One along x')
+        refuse('Bar Two does not lie after Bar One along %s' % a)
     L1, L2, gap = b1 - a1, b2 - a2, a2 - b1
     tol = 1e-6 * max(L1, L2)
-    if abs(probe_x('barOne') - b1) > tol or abs(probe_x('barTwo') - a2) > tol:
+    if abs(probe_axial('barOne', a) - b1) > tol \
+            or abs(probe_axial('barTwo', a) - a2) > tol:
         refuse('the first probe of each bar must be at its contact face '
-               '(x = %g and %g)' % (b1, a2))
+               '(%g and %g along %s)' % (b1, a2, a))
     # Hugoniot slope: each material's (the physics; the contact and interior
     # Riemann solvers take theirs from there); the exact solution covers one
     # slope for both bars
@@ -115,8 +135,10 @@ def main():
         refuse('the bars have different Hugoniot slopes (%g, %g)' % (s1, s2))
     s = s1
 
-    p1 = np.genfromtxt('postProcessing/barOne/probes.csv', delimiter=',', names=True)
-    p2 = np.genfromtxt('postProcessing/barTwo/probes.csv', delimiter=',', names=True)
+    p1 = svmbPost.axial_probes(svmbPost.read_csv(
+        'postProcessing/barOne/probes.csv'), a)
+    p2 = svmbPost.axial_probes(svmbPost.read_csv(
+        'postProcessing/barTwo/probes.csv'), a)
     e1 = np.genfromtxt('postProcessing/barOne/energy.csv', delimiter=',', names=True)
     e2 = np.genfromtxt('postProcessing/barTwo/energy.csv', delimiter=',', names=True)
     t = p1['t']
@@ -129,7 +151,8 @@ def main():
     vC, sC = barImpactExact.contact_plateau(M1, M2, rho1, rho2, v0, s)
     tEnd = float(t[-1])
     vC += v2
-    summary = {'v0': v0, 'vBarTwo': v2, 'lengths': [float(L1), float(L2)],
+    summary = {'axis': [float(c) for c in a],
+               'v0': v0, 'vBarTwo': v2, 'lengths': [float(L1), float(L2)],
                'gap': float(gap),
                'hugoniotS': s, 'exactContactVelocity': vC,
                'exactContactStress': sC}
@@ -183,8 +206,9 @@ def main():
     D = e1['numericalDissipation'] + e2['numericalDissipation']
     summary['energyInitial'] = float(E0)
     summary['energyLostPercent'] = float(100 * D[-1] / E0)
-    summary['momentumInitial'] = float(e1['px'][0] + e2['px'][0])
-    summary['momentumFinal'] = float(e1['px'][-1] + e2['px'][-1])
+    P = svmbPost.axial_momentum(e1, a) + svmbPost.axial_momentum(e2, a)
+    summary['momentumInitial'] = float(P[0])
+    summary['momentumFinal'] = float(P[-1])
     summary['momentumError'] = float(abs(summary['momentumFinal'] - summary['momentumInitial'])
                                      / abs(summary['momentumInitial']))
     stats = svmbPost.run_statistics()

@@ -2,8 +2,8 @@
 """Post-processing of a bar on a rigid wall (run in the case directory):
     python3 -m svmbPost.barWall [region]      (default region0)
 
-The exact solution of an elastic bar along x meeting a flat rigid wall
-across its end, for any material, length, velocity, gap, wall velocity and
+The exact solution of an elastic bar meeting a flat rigid wall across its
+end (the bar along the wall's normal, in any direction), for any material, length, velocity, gap, wall velocity and
 side (the wall before either end), read from the case: the material and
 initial velocity from [constant/<region>/]solidProperties, the wall from its
 `rigidWall` condition (point, normal, velocity), the bar's extent from the
@@ -20,8 +20,11 @@ the plateau is evaluated.  Finite-strain materials without one (neoHookean,
 mooneyRivlin) are evaluated acoustically, which is exact as the impact Mach
 number a/c (in the summary) goes to zero: at a/c = 0.3 the shocked stress
 of a neo-Hookean bar (nu 0.3) is 8.7 % above the acoustic one
-(tests/solidBody/shockPlateau has the jump conditions).  A case outside this (no wall across x, a bar not
-along x, a plastic material) is refused with a message.  Writes
+(tests/solidBody/shockPlateau has the jump conditions).  Velocities, stresses and momenta are taken along
+the bar's axis e, the wall's normal or its opposite, whichever has a
+positive largest component (for a bar along x: the x columns, and the
+signs of x).  A case outside this (a bar not along the wall's normal,
+moving across it, a plastic material) is refused with a message.  Writes
   results/history.csv   t, then vx, sxx (and their exact values) per probe
   results/history.png   computed against exact histories
   results/summary.json  the exact values, the struck face's plateau,
@@ -62,8 +65,6 @@ def setup(region='region0'):
     rho, M = svmbPost.uniaxial_material(path, refuse, 'barWallPost')
     s = float(entry(path, 'material/hugoniot/s', '0'))
     v0 = vector(entry(path, 'initialVelocity', '(0 0 0)'))
-    if abs(v0[1]) + abs(v0[2]) > 1e-12 * max(abs(v0[0]), 1e-300):
-        refuse('the bar moves across x (initialVelocity %s)' % v0)
     walls = [patch for patch in svmbPost.dict_keywords(path,
                                                       'boundaryConditions')
              if entry(path, 'boundaryConditions/%s/type' % patch)
@@ -72,26 +73,31 @@ def setup(region='region0'):
         refuse('%d rigidWall conditions (one is evaluated)' % len(walls))
     w = 'boundaryConditions/%s/' % walls[0]
     xw = vector(entry(path, w + 'point'))
-    n = vector(entry(path, w + 'normal'))
-    n /= np.linalg.norm(n)
+    n = svmbPost.bar_axis(vector(entry(path, w + 'normal')))
     V = vector(entry(path, w + 'velocity', '(0 0 0)'))
-    if abs(abs(n[0]) - 1) > 1e-12:
-        refuse('the wall is not across x (normal %s)' % n)
-    if abs(V[1]) + abs(V[2]) > 1e-12 * max(abs(V[0]), 1e-300):
+    # the axis: the normal or its opposite, whichever has a positive
+    # largest component (x for a bar along x, either side of the wall)
+    e = n if n[int(np.argmax(np.abs(n)))] > 0 else -n
+    if svmbPost.across(V, e) > 1e-9 * max(abs(np.dot(V, e)), 1e-300):
         refuse('the wall moves along itself (velocity %s)' % V)
+    if svmbPost.across(v0, e) > 1e-9 * max(abs(np.dot(v0, e)), 1e-300):
+        refuse('the bar moves across the wall\'s normal (initialVelocity '
+               '%s, normal %s)' % (v0, n))
     X = svmbPost.read_points('constant/%spolyMesh/points' % sub)
-    lo, hi = X.min(axis=0), X.max(axis=0)
-    L = hi[0] - lo[0]
-    if max(hi[1] - lo[1], hi[2] - lo[2]) > L:
-        refuse('the body is not a bar along x (extent %s)' % (hi - lo))
+    lo, hi, radius, area = svmbPost.bar_geometry(X, e)
+    L = hi - lo
+    if radius > L:
+        refuse('the body is not a bar along the wall\'s normal %s (length '
+               '%g, %g across)' % (n, L, 2 * radius))
     # The struck face: the end facing the wall (the normal points into
     # the body)
-    xf = lo[0] if n[0] > 0 else hi[0]
-    gap = (xf - xw[0]) * n[0]
+    ne = float(np.dot(n, e))
+    xf = lo if ne > 0 else hi
+    gap = (xf - np.dot(xw, e)) * ne
     if gap < -1e-9 * L:
         refuse('the bar starts behind the wall (gap %g)' % gap)
     gap = gap if gap > 0 else 0.0
-    a = -(v0[0] - V[0]) * n[0]
+    a = -(np.dot(v0, e) - np.dot(V, e)) * ne
     if not a > 0:
         refuse('the bar and the wall do not approach (relative speed %g)'
                % -a)
@@ -101,11 +107,12 @@ def setup(region='region0'):
         r'\([^()]*\)', entry(path, 'probes/locations', '()'))]
     if not probes:
         refuse('no probes')
-    return {'rho': rho, 'M': M, 'c': c, 'Z': Z, 'hugoniotS': s,
-            'v0': v0[0], 'wallVelocity': V[0], 'normal': n[0], 'a': a,
+    return {'axis': [float(c) for c in e],
+            'rho': rho, 'M': M, 'c': c, 'Z': Z, 'hugoniotS': s,
+            'v0': float(np.dot(v0, e)), 'wallVelocity': float(np.dot(V, e)),
+            'normal': ne, 'a': a,
             'impactMach': a / c,
-            'gap': gap, 'length': L, 'mass': rho * L *
-            (hi[1] - lo[1]) * (hi[2] - lo[2]),
+            'gap': gap, 'length': L, 'mass': rho * L * area,
             'contactStartExact': gap / a,
             # (with a Hugoniot pressure: the wall's plateau lasts at least
             # until the shock reaches the free end; the release and the
@@ -113,8 +120,15 @@ def setup(region='region0'):
             'plateauDuration': 2 * L / c if s == 0 else L / (c + s * a),
             'contactTimeExact': 2 * L / c if s == 0 else None,
             'stressExact': -rho * (c + s * a) * a,
-            'reboundVelocityExact': V[0] + a * n[0] if s == 0 else None,
-            'probeDistances': [abs(p[0] - xf) for p in probes]}
+            'reboundVelocityExact': float(np.dot(V, e)) + a * ne
+            if s == 0 else None,
+            'probeDistances': [abs(np.dot(p, e) - xf) for p in probes]}
+
+
+def read_probes(S, region='region0'):
+    """The probe histories along the bar's axis (svmbPost.axial_probes)."""
+    return svmbPost.axial_probes(svmbPost.read_csv(
+        'postProcessing/%s/probes.csv' % region), np.array(S['axis']))
 
 
 def exact_probe(S, t, d):
@@ -158,7 +172,8 @@ def evaluate(S, probes, energy):
         out['L1_s_probe%d' % k] = float(
             np.mean(np.abs(probes['sxx%d' % k] - s)) / abs(S['stressExact']))
     out.update(dissipation(energy))
-    out['momentumFinal'] = float(energy['px'][-1])
+    out['momentumFinal'] = float(
+        svmbPost.axial_momentum(energy, np.array(S['axis']))[-1])
     out['momentumExactAfterSeparation'] = \
         S['mass'] * S['reboundVelocityExact']
     return out
@@ -181,7 +196,7 @@ def dissipation(energy):
 def main():
     region = sys.argv[1] if len(sys.argv) > 1 else 'region0'
     S = setup(region)
-    P = svmbPost.read_csv('postProcessing/%s/probes.csv' % region)
+    P = read_probes(S, region)
     E = svmbPost.read_csv('postProcessing/%s/energy.csv' % region)
     summary = {k: v for k, v in S.items() if k != 'probeDistances'}
     summary['probeDistances'] = S['probeDistances']

@@ -40,8 +40,9 @@ def main():
     summary = json.load(open('results/summary.json'))
     hist = svmbPost.read_csv('results/history.csv')
     t = hist['t']
-    M1, rho1, v1 = barImpact.material('barOne')
-    M2, rho2, v2 = barImpact.material('barTwo')
+    a = np.array(summary.get('axis', [1.0, 0.0, 0.0]))
+    M1, rho1, v1 = barImpact.material('barOne', a)
+    M2, rho2, v2 = barImpact.material('barTwo', a)
     (L1, L2), gap, v0 = summary['lengths'], summary['gap'], summary['v0']
     s = summary['hugoniotS']
     trips = (2 * L1 / np.sqrt(M1 / rho1), 2 * L2 / np.sqrt(M2 / rho2))

@@ -697,6 +697,12 @@ void Foam::dualMesh::patchPointPlanes
     planes = none;
     nPlanes.setSize(nPoints());
     nPlanes = 0;
+
+    // A feature point's principal directions; where the two leading ones
+    // share their principal value (to 1e-6 of the largest), the basis
+    // (p1, p2) of their plane in which the fourth moments of the sub-face
+    // normals are summed next
+    labelList pairAt(nPoints(), -1);
     forAll(T, i)
     {
         if (tr(T[i]) <= 0)
@@ -726,6 +732,98 @@ void Foam::dualMesh::patchPointPlanes
             {
                 const Eigen::Vector3d e(eig.eigenvectors().col(k));
                 planes[i][nPlanes[i]++] = vector(e(0), e(1), e(2));
+            }
+        }
+        if
+        (
+            nPlanes[i] >= 2
+         && eig.eigenvalues()(2) - eig.eigenvalues()(1) <= 1e-6*lMax
+        )
+        {
+            pairAt[i] = 0;
+        }
+    }
+
+    // The fourth moments sum_s |A_s| (n_s.u)^4 for u = cos(a) p1 + sin(a)
+    // p2 in terms of M_jk = sum_s |A_s| (n_s.p1)^j (n_s.p2)^k, j + k = 4
+    // (summed over processors like T)
+    List<scalarField> M(5, scalarField(nPoints(), 0.0));
+    forAll(sf.point, s)
+    {
+        const label i = sf.point[s];
+        const scalar a = mag(sf.area[s]);
+        if (pairAt[i] < 0 || a <= VSMALL)
+        {
+            continue;
+        }
+        const vector n(sf.area[s]/a);
+        const scalar c = n & planes[i][0], d = n & planes[i][1];
+        M[0][i] += a*c*c*c*c;
+        M[1][i] += a*c*c*c*d;
+        M[2][i] += a*c*c*d*d;
+        M[3][i] += a*c*d*d*d;
+        M[4][i] += a*d*d*d*d;
+    }
+    for (scalarField& Mk : M)
+    {
+        syncTools::syncPointList(mesh_, Mk, plusEqOp<scalar>(), scalar(0));
+    }
+    forAll(pairAt, i)
+    {
+        if (pairAt[i] < 0)
+        {
+            continue;
+        }
+        auto moment = [&](const scalar a)
+        {
+            const scalar c = Foam::cos(a), d = Foam::sin(a);
+            return M[0][i]*c*c*c*c + 4*M[1][i]*c*c*c*d
+                + 6*M[2][i]*c*c*d*d + 4*M[3][i]*c*d*d*d + M[4][i]*d*d*d*d;
+        };
+        // The largest over [0, pi) on a grid of a quarter degree, then
+        // refined by golden sections within a grid step
+        const label nGrid = 720;
+        scalar best = 0, fBest = -GREAT;
+        for (label g = 0; g < nGrid; ++g)
+        {
+            const scalar a = g*constant::mathematical::pi/nGrid;
+            const scalar f = moment(a);
+            if (f > fBest)
+            {
+                fBest = f;
+                best = a;
+            }
+        }
+        const scalar r = 0.5*(Foam::sqrt(5.0) - 1);
+        scalar lo = best - constant::mathematical::pi/nGrid;
+        scalar hi = best + constant::mathematical::pi/nGrid;
+        for (label iter = 0; iter < 60; ++iter)
+        {
+            const scalar a1 = hi - r*(hi - lo), a2 = lo + r*(hi - lo);
+            if (moment(a1) < moment(a2))
+            {
+                lo = a1;
+            }
+            else
+            {
+                hi = a2;
+            }
+        }
+        const scalar a = 0.5*(lo + hi);
+        const vector p1(planes[i][0]), p2(planes[i][1]);
+        planes[i][0] = Foam::cos(a)*p1 + Foam::sin(a)*p2;
+        planes[i][1] = -Foam::sin(a)*p1 + Foam::cos(a)*p2;
+    }
+
+    // Every plane facing out of the body: the Riemann boundary slopes
+    // take the waves the face sends in along it (greenGauss.C)
+    forAll(planes, i)
+    {
+        for (label k = 0; k < nPlanes[i]; ++k)
+        {
+            if ((planes[i][k] & meanN[i]) < 0)
+            {
+                planes[i][k] = -planes[i][k];
             }
         }
     }

@@ -1330,8 +1330,7 @@ void Foam::solidBody::addInteriorFluxes
         vector dtP(Zero);
         scalar dtPn = 0, dvPn = 0, dtPt = 0, dvPt = 0;
         // (the lower bound of the jumps' own impedances, in units of the
-        // wave's: one keeps the wave's, and the choice is a select, not a
-        // branch, since closing and opening edges alternate unpredictably)
+        // wave's: one keeps the wave's)
         scalar lower = 1;
         if (upwindE)
         {

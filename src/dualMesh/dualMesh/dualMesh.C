@@ -698,11 +698,11 @@ void Foam::dualMesh::patchPointPlanes
     nPlanes.setSize(nPoints());
     nPlanes = 0;
 
-    // A feature point's principal directions; where the two leading ones
-    // share their principal value (to 1e-6 of the largest), the basis
-    // (p1, p2) of their plane in which the fourth moments of the sub-face
-    // normals are summed next
-    labelList pairAt(nPoints(), -1);
+    // A feature point's principal directions; degenerate: the two leading
+    // ones share their principal value (to 1e-6 of the largest), and are
+    // only the basis (p1, p2) of their plane in which the fourth moments of
+    // the sub-face normals are summed next
+    boolList degenerate(nPoints(), false);
     forAll(T, i)
     {
         if (tr(T[i]) <= 0)
@@ -740,7 +740,7 @@ void Foam::dualMesh::patchPointPlanes
          && eig.eigenvalues()(2) - eig.eigenvalues()(1) <= 1e-6*lMax
         )
         {
-            pairAt[i] = 0;
+            degenerate[i] = true;
         }
     }
 
@@ -752,7 +752,7 @@ void Foam::dualMesh::patchPointPlanes
     {
         const label i = sf.point[s];
         const scalar a = mag(sf.area[s]);
-        if (pairAt[i] < 0 || a <= VSMALL)
+        if (!degenerate[i] || a <= VSMALL)
         {
             continue;
         }
@@ -768,9 +768,9 @@ void Foam::dualMesh::patchPointPlanes
     {
         syncTools::syncPointList(mesh_, Mk, plusEqOp<scalar>(), scalar(0));
     }
-    forAll(pairAt, i)
+    forAll(degenerate, i)
     {
-        if (pairAt[i] < 0)
+        if (!degenerate[i])
         {
             continue;
         }

@@ -133,13 +133,22 @@ def read_probes(S, region='region0'):
 
 def exact_probe(S, t, d):
     """Exact velocity and axial stress at distance d from the struck face
-    (linear bar)."""
+    (linear bar).  A sample that falls on one of the exact solution's jumps
+    (within 1e-9 of the contact's duration: the end of contact of a bar of
+    length 1 sampled every step lands on 2L/c) takes the mean of the two
+    sides, so that the L1 errors do not depend on how that time rounds
+    (the bar turned as a rigid body: 1.068 against 1.155 % at the face)."""
     t0, c, L = S['contactStartExact'], S['c'], S['length']
-    v = np.where(t < t0 + d / c, S['v0'],
-                 np.where(t < t0 + (2 * L - d) / c, S['wallVelocity'],
+    t1, t2 = t0 + d / c, t0 + (2 * L - d) / c
+    v = np.where(t < t1, S['v0'],
+                 np.where(t < t2, S['wallVelocity'],
                           S['reboundVelocityExact']))
-    s = np.where((t >= t0 + d / c) & (t < t0 + (2 * L - d) / c),
-                 S['stressExact'], 0.0)
+    s = np.where((t >= t1) & (t < t2), S['stressExact'], 0.0)
+    tol = 1e-9 * 2 * L / c
+    on1, on2 = np.abs(t - t1) <= tol, np.abs(t - t2) <= tol
+    v = np.where(on1, 0.5 * (S['v0'] + S['wallVelocity']), v)
+    v = np.where(on2, 0.5 * (S['wallVelocity'] + S['reboundVelocityExact']), v)
+    s = np.where(on1 | on2, 0.5 * S['stressExact'], s)
     return v, s
 
 

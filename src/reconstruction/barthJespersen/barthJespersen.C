@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "barthJespersen.H"
-#include "branchFree.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -167,23 +166,19 @@ void Foam::limiters::barthJespersen::limitPoints
             hi = sharedMax_[s];
         }
 
-        // phi = min(1, (hi - qi)/dHi where dHi > noise, (lo - qi)/dLo where
-        // dLo < -noise), without a branch (branchFree.H): the divisions
-        // are made in every component, by 1 where they are not wanted
         fluxState phi;
         for (direction c = 0; c < nFluxComponents; ++c)
         {
-            using namespace branchFree;
-            const scalar up = dHi[c], down = dLo[c];
-            const bool rises = greaterThanNonNegative(up, noise[c]);
-            const bool falls = greaterThanNonNegative(-down, noise[c]);
-            const scalar pUp = (hi[c] - qi[c])/selectIf(rises, up, 1);
-            const scalar pDown = (lo[c] - qi[c])/selectIf(falls, down, 1);
-            phi[c] = min
-            (
-                min(scalar(1), selectIf(rises, pUp, 1)),
-                selectIf(falls, pDown, 1)
-            );
+            scalar p = 1;
+            if (dHi[c] > noise[c])
+            {
+                p = min(p, (hi[c] - qi[c])/dHi[c]);
+            }
+            if (dLo[c] < -noise[c])
+            {
+                p = min(p, (lo[c] - qi[c])/dLo[c]);
+            }
+            phi[c] = p;
         }
         if (s < 0)
         {

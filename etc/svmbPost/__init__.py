@@ -8,11 +8,13 @@ tests; put $SVMB_PROJECT/etc on PYTHONPATH, as etc/bashrc does):
 Case-specific figures live with the case (tutorials/taylorBar/taylorBarPost.py).
 
 Helpers:
-reading OpenFOAM point fields and mesh points (ASCII or binary), the
-solver's CSV monitors, and the figures it writes with every complete time
-directory (<time>/uniform/runStatistics, contactState.<pair>).  Figures come
-from these files, never from the wording of the log.
+reading OpenFOAM point fields, mesh points and faces (ASCII or binary,
+compressed or not), the solver's CSV monitors, and the figures it writes
+with every complete time directory (<time>/uniform/runStatistics,
+contactState.<pair>).  Figures come from these files, never from the
+wording of the log.
 """
+import gzip
 import os
 import re
 import subprocess
@@ -22,17 +24,81 @@ import numpy as np
 _NUM = r'[-+0-9.eE]+'
 
 
+# Components per point of each field type, and the bytes of a label (the
+# build's WM_LABEL_SIZE; the files' "arch" entry says which)
+_NCOMP = {'scalar': 1, 'vector': 3, 'symmTensor': 6, 'tensor': 9,
+          'sphericalTensor': 1}
+
+
+def _read_foam_file(path):
+    """(header, body) bytes of an OpenFOAM file, written with or without
+    writeCompression (path or path.gz); the header ends at the FoamFile
+    dictionary's closing brace."""
+    if not os.path.isfile(path) and os.path.isfile(path + '.gz'):
+        raw = gzip.open(path + '.gz', 'rb').read()
+    else:
+        raw = open(path, 'rb').read()
+    end = raw.index(b'}', raw.index(b'FoamFile')) + 1
+    return raw[:end], raw[end:]
+
+
+def foam_file_exists(path):
+    """Whether an OpenFOAM file was written (compressed or not)."""
+    return os.path.isfile(path) or os.path.isfile(path + '.gz')
+
+
+def read_text(path):
+    """The whole of a text OpenFOAM file (a dictionary such as
+    polyMesh/boundary), compressed or not."""
+    return b''.join(_read_foam_file(path)).decode()
+
+
+def _is_binary(header):
+    return re.search(rb'format\s+binary', header) is not None
+
+
+def _label_type(header):
+    m = re.search(rb'label=(\d+)', header)
+    return np.int64 if m and m.group(1) == b'64' else np.int32
+
+
+def _binary_list(body, start, dtype, count):
+    """count values of dtype from the raw block after the '(' at or after
+    start; returns them and the offset after the closing ')'."""
+    open_paren = body.index(b'(', start)
+    n = np.dtype(dtype).itemsize*count
+    data = np.frombuffer(body[open_paren + 1:open_paren + 1 + n],
+                         dtype=dtype).copy()
+    return data, open_paren + 1 + n + 1
+
+
 def read_points(path):
-    """Mesh points (N x 3) from constant/[region/]polyMesh/points."""
-    raw = open(path, 'rb').read()
-    head = raw[:raw.index(b'}') + 1]
-    if re.search(rb'format\s+binary', head):
-        body = raw[len(head):]
-        m = re.search(rb'\n\s*(\d+)\s*\n?\s*\(', body)
-        n = int(m.group(1))
-        return np.frombuffer(body[m.end():m.end() + 24 * n],
-                             dtype=np.float64).reshape(n, 3).copy()
-    return read_vector_list(raw.decode())
+    """Mesh points (N x 3) from constant/[region/]polyMesh/points (ASCII or
+    binary, compressed or not)."""
+    head, body = _read_foam_file(path)
+    m = re.search(rb'\n\s*(\d+)\s*\n?\s*\(', body)
+    n = int(m.group(1))
+    if _is_binary(head):
+        return _binary_list(body, m.end() - 1, np.float64, 3*n)[0] \
+            .reshape(n, 3)
+    return read_vector_list((head + body).decode())
+
+
+def read_faces(path):
+    """Faces of constant/[region/]polyMesh/faces as a list of point-label
+    arrays: the ASCII faceList (n(a b c)) or the binary faceCompactList
+    (the offsets, then the concatenated labels)."""
+    head, body = _read_foam_file(path)
+    if _is_binary(head):
+        label = _label_type(head)
+        m = re.search(rb'(\d+)\s*\(', body)
+        offsets, pos = _binary_list(body, m.end() - 1, label,
+                                    int(m.group(1)))
+        m = re.compile(rb'(\d+)\s*\(').search(body, pos)
+        labels = _binary_list(body, m.end() - 1, label, int(m.group(1)))[0]
+        return [labels[a:b] for a, b in zip(offsets[:-1], offsets[1:])]
+    faces = re.findall(r'\d+\(([\d\s]+)\)', body.decode())
+    return [np.array(f.split(), dtype=int) for f in faces]
 
 
 def read_vector_list(text, start_key=None):
@@ -47,20 +113,29 @@ def read_vector_list(text, start_key=None):
 
 
 def read_point_field(path):
-    """Internal values of an ASCII point field (scalar: N, vector: N x 3,
-    tensor: N x 9, symmTensor: N x 6)."""
-    text = open(path).read()
-    i = text.index('internalField')
-    head = text[i:i + 200]
-    if 'uniform' in head and 'nonuniform' not in head:
+    """Internal values of a point field (scalar: N, vector: N x 3,
+    tensor: N x 9, symmTensor: N x 6), ASCII or binary, compressed or
+    not."""
+    head, body = _read_foam_file(path)
+    i = body.index(b'internalField')
+    m = re.compile(rb'internalField\s+(nonuniform\s+List<(\w+)>\s*(\d+)'
+                   rb'\s*\(|uniform)').match(body, i)
+    if m is None or m.group(1) == b'uniform':
         raise ValueError('uniform field ' + path)
-    m = re.search(r'nonuniform\s+List<(\w+)>\s*(\d+)\s*\(', text[i:])
-    kind, n = m.group(1), int(m.group(2))
-    body = text[i + m.end():]
-    body = body[:body.index('\n)')]
-    if kind == 'scalar':
-        return np.array(body.split(), dtype=float)
-    return np.array(re.findall(_NUM, body), dtype=float).reshape(n, -1)
+    kind, n = m.group(2).decode(), int(m.group(3))
+    if kind not in _NCOMP:
+        raise ValueError('%s: unknown field type %s' % (path, kind))
+    if _is_binary(head):
+        values = _binary_list(body, m.end() - 1, np.float64,
+                              _NCOMP[kind]*n)[0]
+    else:
+        text = body[m.end():].decode()
+        # (a short list is written on one line: n(a b c))
+        end = text.find('\n)')
+        text = text[:end if end >= 0 else text.index(')')]
+        values = np.array(text.split() if kind == 'scalar'
+                          else re.findall(_NUM, text), dtype=float)
+    return values if kind == 'scalar' else values.reshape(n, -1)
 
 
 def fail(tool, message):

@@ -69,13 +69,10 @@ def field_path(time, body, name):
 
 
 def mesh_edges(body):
-    """Unique mesh edges (E x 2) from the ASCII polyMesh faces."""
-    text = open(mesh_dir(body) + '/faces').read()
-    body_text = text[text.index('}') + 1:]
-    faces = re.findall(r'\d+\(([\d\s]+)\)', body_text)
+    """Unique mesh edges (E x 2) from the polyMesh faces."""
     edges = set()
-    for f in faces:
-        v = [int(i) for i in f.split()]
+    for f in svmbPost.read_faces(mesh_dir(body) + '/faces'):
+        v = [int(i) for i in f]
         for a, b in zip(v, v[1:] + v[:1]):
             edges.add((a, b) if a < b else (b, a))
     return np.array(sorted(edges), dtype=int)
@@ -101,17 +98,16 @@ def smoothness(p, edges, floor=0.0):
 
 
 def patch_points(body, patch):
-    """Mesh points of a patch (ASCII polyMesh; OpenFOAM writes nFaces
-    before startFace)."""
-    text = open(mesh_dir(body) + '/boundary').read()
+    """Mesh points of a patch (OpenFOAM writes nFaces before
+    startFace)."""
+    text = svmbPost.read_text(mesh_dir(body) + '/boundary')
     m = re.search(r'\b%s\s*\{[^}]*?nFaces\s+(\d+);[^}]*?startFace\s+(\d+);'
                   % patch, text)
     nf, start = int(m.group(1)), int(m.group(2))
-    ftext = open(mesh_dir(body) + '/faces').read()
-    faces = re.findall(r'\d+\(([\d\s]+)\)', ftext[ftext.index('}') + 1:])
+    faces = svmbPost.read_faces(mesh_dir(body) + '/faces')
     pts = set()
     for f in faces[start:start + nf]:
-        pts.update(int(i) for i in f.split())
+        pts.update(int(i) for i in f)
     return np.array(sorted(pts), dtype=int)
 
 
@@ -157,7 +153,7 @@ def plane_strain_mismatch(names, X, c):
                      % (b, 'xyz'[c]))
         for time in written_times():
             path = field_path(time, b, 'v')
-            if not os.path.isfile(path):
+            if not svmbPost.foam_file_exists(path):
                 continue
             try:
                 v = svmbPost.read_point_field(path)
@@ -266,7 +262,7 @@ def main():
     for time in written_times():
         for b in names:
             path = field_path(time, b, 'p')
-            if os.path.isfile(path):
+            if svmbPost.foam_file_exists(path):
                 try:
                     fields[(time, b)] = svmbPost.read_point_field(path)
                 except ValueError:      # uniform: at rest

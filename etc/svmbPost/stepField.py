@@ -44,13 +44,9 @@ def main():
         X = svmbPost.read_points(mesh_dir(body) + '/points')
         for t in times:
             path = field_path(t, body, 'stableDeltaT')
-            if not os.path.isfile(path):
+            if not svmbPost.foam_file_exists(path):
                 svmbPost.fail('stepField', '%s does not exist (a run of the '
                               'solver before the field was written?)' % path)
-            head = open(path, 'rb').read(2000)
-            if b'binary' in head.split(b'}')[0]:
-                svmbPost.fail('stepField', '%s is binary: set writeFormat '
-                              'ascii' % path)
             dt = svmbPost.read_point_field(path)
             f = figures(dt)
             x = X[f['argmin']]

@@ -144,6 +144,21 @@ Foam::bodyMonitor::bodyMonitor(const solidBody& body)
     Info<< "    monitors   postProcessing/" << body.name()
         << "/energy.csv, probes.csv (" << probeLocations_.size()
         << " probes)" << nl;
+    // A location within a body lies within an edge's length of a mesh
+    // point: one farther away is outside it (a typing error, other units,
+    // the wrong body), and its nearest point would be recorded silently
+    scalar longestEdge = 0;
+    if (probeLocations_.size())
+    {
+        const pointField& X = body.mesh().points();
+        const labelList& es = body.dual().edgeStart();
+        const labelList& ee = body.dual().edgeEnd();
+        forAll(es, e)
+        {
+            longestEdge = max(longestEdge, magSqr(X[ee[e]] - X[es[e]]));
+        }
+        longestEdge = Foam::sqrt(returnReduce(longestEdge, maxOp<scalar>()));
+    }
     forAll(probeLocations_, k)
     {
         point p(Zero);
@@ -154,6 +169,19 @@ Foam::bodyMonitor::bodyMonitor(const solidBody& body)
         reduce(p, sumOp<vector>());
         Info<< "    probe " << k << " at " << probeLocations_[k]
             << ": point at " << p << nl;
+        const scalar distance = mag(p - probeLocations_[k]);
+        if (distance > longestEdge)
+        {
+            FatalIOErrorInFunction(body.dict().subDict("probes"))
+                << "Probe " << k << " of body " << body.name()
+                << ": locations entry " << probeLocations_[k]
+                << " is outside the body: its nearest mesh point " << p
+                << " is " << distance << " away, farther than the mesh's"
+                << " longest edge (" << longestEdge << ")." << nl
+                << "    A probe records the mesh point nearest to a location"
+                << " in the body's initial configuration (same units as"
+                << " the mesh)." << exit(FatalIOError);
+        }
     }
 }
 

@@ -24,8 +24,7 @@ import numpy as np
 _NUM = r'[-+0-9.eE]+'
 
 
-# Components per point of each field type, and the bytes of a label (the
-# build's WM_LABEL_SIZE; the files' "arch" entry says which)
+# Components per point of each field type
 _NCOMP = {'scalar': 1, 'vector': 3, 'symmTensor': 6, 'tensor': 9,
           'sphericalTensor': 1}
 
@@ -57,7 +56,13 @@ def _is_binary(header):
     return re.search(rb'format\s+binary', header) is not None
 
 
+def is_binary_file(path):
+    """Whether an OpenFOAM file (compressed or not) was written in binary."""
+    return _is_binary(_read_foam_file(path)[0])
+
+
 def _label_type(header):
+    # (the build's WM_LABEL_SIZE, from the file's "arch" entry)
     m = re.search(rb'label=(\d+)', header)
     return np.int64 if m and m.group(1) == b'64' else np.int32
 

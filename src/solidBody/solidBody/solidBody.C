@@ -312,6 +312,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     minEnergyTheta_(1),
     levelEnergyBudget_(0),
     levelStageWeight_(0),
+    keepGradients_(false),
     stepEnergy0_(0),
     nRelaxedSteps_(0),
     minRelaxation_(1),
@@ -1650,6 +1651,15 @@ void Foam::solidBody::addInteriorFluxes
         // 0) may be spent, beyond it the edges' fluxes are blended towards
         // first order (the blend of energyStability.H): the step's
         // production over all levels then stays <= 0, as one global step's
+        if (blend && Pstream::parRun())
+        {
+            // (every processor blends alike: its edges' shares of the
+            // level's production, in one exchange)
+            vector2D sums(S2, scale);
+            reduce(sums, sumOp<vector2D>());
+            S2 = sums.x();
+            scale = sums.y();
+        }
         const scalar w = levelStageWeight_;
         if (!blend || !(levelEnergyBudget_ + w*S2 > 1e-12*w*scale))
         {
@@ -1668,6 +1678,7 @@ void Foam::solidBody::addInteriorFluxes
             firstOrderFlux(e, tC, vCA, dS);
             S1 += production(e, tC, vCA, dS);
         }
+        reduce(S1, sumOp<scalar>());
         S1 = min(S1, 0.0);
         const scalar allowed = -levelEnergyBudget_/w;
         const scalar theta =
@@ -1834,12 +1845,19 @@ void Foam::solidBody::updateBoundaryIncrements()
         }
     }
 
-    if (Pstream::parRun())
+    if (Pstream::parRun() && keepGradients_)
+    {
+        // Multirate stepping: the gradients are still needed, so the
+        // boundary points' increments are exchanged as they are (every
+        // processor lists the points on a patch of any of them)
+        dual_.sharedSums().sum(bp, boundaryIncrement_);
+    }
+    else if (Pstream::parRun())
     {
         // Each processor summed its own edges: add the shares of shared
         // points.  Exchanged in the gradients' list, free until the
         // interior fluxes compute them (multirate stepping, which keeps
-        // gradients between levels, runs serially): each increment's
+        // gradients between levels, exchanges them above): each increment's
         // doubles in the bytes of a point's single-precision gradient, so
         // that the increments keep the states' precision without a second
         // point-sized list
@@ -2105,11 +2123,13 @@ void Foam::solidBody::endStep(const labelUList* points)
         material_->updateState(F_, Jc(), dDplastic_, points);
         if (points)
         {
-            // (serial: multirate stepping runs on one processor)
+            // (multirate stepping: one level's points, a point shared by
+            // processors counted once; in parallel this processor's share,
+            // summed over the processors at the end of the step)
             scalar dD = 0;
             for (const label i : *points)
             {
-                dD += dDplastic_[i]*dual_.volumes()[i];
+                dD += dual_.pointWeight(i)*dDplastic_[i]*dual_.volumes()[i];
             }
             Dplastic_ += dD;
             return;

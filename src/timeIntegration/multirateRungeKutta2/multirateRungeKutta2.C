@@ -21,7 +21,8 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
     nLevels_(nLevels),
     levels_(bodies.size()),
     lastUpdates_(0),
-    pointsPerLevel_(nLevels, 0)
+    pointsPerLevel_(nLevels, 0),
+    pointsPerLevelSum_(nLevels, 0.0)
 {
     const dictionary& controlDict = runTime.controlDict();
     auto unsupported = [&](const string& what)
@@ -32,10 +33,6 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
             << "    Change that, or use multirateLevels 1 (one global step)."
             << exit(FatalIOError);
     };
-    if (Pstream::parRun())
-    {
-        unsupported("parallel runs");
-    }
     if (contacts.size())
     {
         unsupported
@@ -92,6 +89,9 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
         L.gradient1.setSize(nLevels_);
         L.coarser.setSize(nLevels_);
         L.edgePoints.setSize(nLevels_);
+        L.sharedOnLevel.setSize(nLevels_);
+        L.sharedGradient1.setSize(nLevels_);
+        L.levelWeight.setSize(nLevels_, 0.0);
         L.onLevel.setSize(nLevels_);
         for (boolList& on : L.onLevel)
         {
@@ -102,6 +102,20 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
         L.qPredicted.setSize(n);
         // Each point's boundary sub-faces
         const dualMesh& dual = b.dual_;
+        if (Pstream::parRun())
+        {
+            // (collective: made here, used in the steps)
+            dual.sharedSums();
+            DynamicList<label> shared;
+            for (label i = 0; i < n; ++i)
+            {
+                if (dual.pointWeight(i) < 1)
+                {
+                    shared.append(i);
+                }
+            }
+            L.sharedPoints.transfer(shared);
+        }
         const label nPatches = dual.mesh().boundaryMesh().size();
         L.pointSubFaceStart.setSize(n + 1, 0);
         for (label patchi = 0; patchi < nPatches; ++patchi)
@@ -164,8 +178,38 @@ void Foam::multirateRungeKutta2::setLevels
         level[i] = l;
     }
 
+    // A point shared by processors on one level (the finer), where its
+    // copies' own steps differ in rounding.  True if that changed one
+    const labelList& shared = L.sharedPoints;
+    labelList sharedLevel;
+    auto syncShared = [&]()
+    {
+        if (!Pstream::parRun())
+        {
+            return false;
+        }
+        sharedLevel = labelUIndList(level, shared)();
+        dual.sharedSums().combine
+        (
+            shared, sharedLevel,
+            [](label& x, const label y) { x = max(x, y); }
+        );
+        bool changed = false;
+        forAll(shared, k)
+        {
+            if (level[shared[k]] != sharedLevel[k])
+            {
+                level[shared[k]] = sharedLevel[k];
+                changed = true;
+            }
+        }
+        return changed;
+    };
+    syncShared();
+
     // Neighbours at most one level apart (finer wins), both plane-strain
-    // copies on one level
+    // copies on one level (on every processor: each pass ends with the
+    // shared points' exchange)
     const planeStrainTie& tie = b.planeStrain_();
     for (bool changed = true; changed; )
     {
@@ -195,6 +239,11 @@ void Foam::multirateRungeKutta2::setLevels
                 changed = true;
             }
         }
+        changed = syncShared() || changed;
+        if (Pstream::parRun())
+        {
+            reduce(changed, orOp<bool>());
+        }
     }
 
     for (label l = 0; l < nLevels_; ++l)
@@ -207,12 +256,23 @@ void Foam::multirateRungeKutta2::setLevels
         L.onLevel[l] = false;
     }
     L.finest = 0;
+    L.levelWeight = 0;
     forAll(level, i)
     {
         L.points[level[i]].append(i);
         L.onLevel[level[i]][i] = true;
-        ++pointsPerLevel_[level[i]];
+        L.levelWeight[level[i]] += dual.pointWeight(i);
         L.finest = max(L.finest, level[i]);
+    }
+    forAll(pointsPerLevelSum_, l)
+    {
+        pointsPerLevelSum_[l] += L.levelWeight[l];
+    }
+    // (every processor recurses to the finest level of any: the stages
+    // exchange with each other)
+    if (Pstream::parRun())
+    {
+        reduce(L.finest, maxOp<label>());
     }
     forAll(es, e)
     {
@@ -247,6 +307,7 @@ void Foam::multirateRungeKutta2::setLevels
                 L.gradient1[l].append(j);
             }
         }
+        completeShared(b, L, mark, L.gradient1[l]);
         for (const label e : L.edges[l])
         {
             const label i = es[e], j = ee[e];
@@ -259,6 +320,20 @@ void Foam::multirateRungeKutta2::setLevels
             {
                 mark[j] = true;
                 L.coarser[l].append(j);
+            }
+        }
+        completeShared(b, L, mark, L.coarser[l]);
+        L.sharedOnLevel[l].clear();
+        L.sharedGradient1[l].clear();
+        for (const label i : shared)
+        {
+            if (level[i] == l)
+            {
+                L.sharedOnLevel[l].append(i);
+            }
+            if (mark[i] && level[i] >= l)
+            {
+                L.sharedGradient1[l].append(i);
             }
         }
         for (const label i : L.gradient1[l]) mark[i] = false;
@@ -293,6 +368,75 @@ void Foam::multirateRungeKutta2::interpolateCoarser
 }
 
 
+void Foam::multirateRungeKutta2::completeShared
+(
+    const solidBody& b,
+    const bodyLevels& L,
+    boolList& mark,
+    DynamicList<label>& list
+) const
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    const labelList& shared = L.sharedPoints;
+    boolList listed(shared.size());
+    forAll(shared, k)
+    {
+        listed[k] = mark[shared[k]];
+    }
+    b.dual_.sharedSums().combine
+    (
+        shared, listed, [](bool& x, const bool y) { x = x || y; }
+    );
+    forAll(shared, k)
+    {
+        const label i = shared[k];
+        if (listed[k] && !mark[i])
+        {
+            mark[i] = true;
+            list.append(i);
+        }
+    }
+}
+
+
+void Foam::multirateRungeKutta2::syncResiduals
+(
+    solidBody& b,
+    const DynamicList<label>& shared
+) const
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    // Momentum, F and J in one exchange
+    typedef FixedList<scalar, 13> residualShare;
+    stageResidual& R = b.residual_;
+    const bool RJ = R.J.size();
+    List<residualShare> r(shared.size());
+    forAll(shared, k)
+    {
+        const label i = shared[k];
+        residualShare& rk = r[k];
+        for (direction c = 0; c < 3; ++c) rk[c] = R.momentum[i][c];
+        for (direction c = 0; c < 9; ++c) rk[3 + c] = R.F[i][c];
+        rk[12] = RJ ? R.J[i] : 0;
+    }
+    b.dual_.sharedSums().sum(shared, r);
+    forAll(shared, k)
+    {
+        const label i = shared[k];
+        const residualShare& rk = r[k];
+        for (direction c = 0; c < 3; ++c) R.momentum[i][c] = rk[c];
+        for (direction c = 0; c < 9; ++c) R.F[i][c] = rk[3 + c];
+        if (RJ) R.J[i] = rk[12];
+    }
+}
+
+
 void Foam::multirateRungeKutta2::resetResiduals
 (
     solidBody& b,
@@ -323,18 +467,37 @@ void Foam::multirateRungeKutta2::gradients
 (
     solidBody& b,
     bodyLevels& L,
-    const DynamicList<label>& points
+    const DynamicList<label>& points,
+    const DynamicList<label>& shared
 ) const
 {
-    if (!b.scheme_->secondOrder() || points.empty())
+    if (!b.scheme_->secondOrder())
     {
         return;
     }
-    greenGaussGradient
-    (
-        b.dual_, b.q_, b.G_, points,
-        L.pointSubFaceStart, L.subFacePatch, L.subFace
-    );
+    if (points.size())
+    {
+        greenGaussGradient
+        (
+            b.dual_, b.q_, b.G_, points,
+            L.pointSubFaceStart, L.subFacePatch, L.subFace
+        );
+    }
+    if (Pstream::parRun())
+    {
+        // Each processor's share over its own edges and sub-faces, already
+        // divided by the (whole) volume: the shares add up
+        List<fluxStateGradient> g(shared.size());
+        forAll(shared, k)
+        {
+            g[k] = b.G_[shared[k]];
+        }
+        b.dual_.sharedSums().sum(shared, g);
+        forAll(shared, k)
+        {
+            b.G_[shared[k]] = g[k];
+        }
+    }
 }
 
 
@@ -352,9 +515,12 @@ Foam::scalar Foam::multirateRungeKutta2::power
         const scalar rho = b.material_->rho();
         for (const label i : L.points[l])
         {
-            P += V[i]*rho*(b.bodyForce_ & fluxVelocity(b.q_[i]));
+            P +=
+                b.dual_.pointWeight(i)*V[i]*rho
+               *(b.bodyForce_ & fluxVelocity(b.q_[i]));
         }
     }
+    // (in parallel this processor's share: summed at the end of the step)
     return P;
 }
 
@@ -408,7 +574,7 @@ bool Foam::multirateRungeKutta2::advance
         L.qStart[i] = b.q_[i];
     }
     resetResiduals(b, L, l);
-    gradients(b, L, L.gradient1[l]);
+    gradients(b, L, L.gradient1[l], L.sharedGradient1[l]);
 
     ownEdgeFluxes(b, L, l, halfh);
 
@@ -428,6 +594,7 @@ bool Foam::multirateRungeKutta2::advance
         L.AJ[i] = RJ ? -halfh*(R.J[i] - L.AJ[i]) : 0;
     }
     b.addBoundaryFluxes(t, h, false, &P);
+    syncResiduals(b, L.sharedOnLevel[l]);
     const scalar P1 = power(b, L, l);
     b.rkStage(h, 0, &P);
     b.applyConstraints(&on);
@@ -439,7 +606,7 @@ bool Foam::multirateRungeKutta2::advance
     {
         L.qPredicted[i] = b.q_[i];
     }
-    lastUpdates_ += P.size();
+    lastUpdates_ += L.levelWeight[l];
 
     // The finer levels: two steps each
     if (L.finest > l)
@@ -462,7 +629,7 @@ bool Foam::multirateRungeKutta2::advance
     }
     interpolateCoarser(b, L, l, t + h, tc, hc);
     resetResiduals(b, L, l);
-    gradients(b, L, P);
+    gradients(b, L, P, L.sharedOnLevel[l]);
     ownEdgeFluxes(b, L, l, halfh);
     b.addBoundaryFluxes(t + h, h, true, &P);
     // U^n+1 = U^n + h/2 (R1 + R2) over the level's edges, plus the finer
@@ -475,6 +642,7 @@ bool Foam::multirateRungeKutta2::advance
         R.F[i] += twoByH*L.AF[i];
         if (RJ) R.J[i] += twoByH*L.AJ[i];
     }
+    syncResiduals(b, L.sharedOnLevel[l]);
     const scalar P2 = power(b, L, l);
     b.rkStage(h, 0.5, &P);
     b.applyConstraints(&on);
@@ -484,7 +652,7 @@ bool Foam::multirateRungeKutta2::advance
     }
     b.endStep(&P);
     b.Wext_ += halfh*(P1 + P2);
-    lastUpdates_ += P.size();
+    lastUpdates_ += L.levelWeight[l];
 
     return true;
 }
@@ -509,6 +677,7 @@ Foam::scalar Foam::multirateRungeKutta2::deltaT
             dtMin = min(dtMin, dti);
         }
     }
+    reduce(dtMin, minOp<scalar>());
     return dtMin*scalar(label(1) << (nLevels_ - 1));
 }
 
@@ -522,7 +691,7 @@ Foam::label Foam::multirateRungeKutta2::step
 )
 {
     lastUpdates_ = 0;
-    pointsPerLevel_ = 0;
+    pointsPerLevelSum_ = 0;
     fraction = 1;
 
     // The step's energy balance of tvdRungeKutta2 on the whole step (the
@@ -574,6 +743,7 @@ Foam::label Foam::multirateRungeKutta2::step
     {
         solidBody& b = bodies[bi];
         bodyLevels& L = levels_[bi];
+        b.keepGradients_ = true;
         setLevels(b, L, dt);
         save(b, L);
         if (b.lm0_.size() != b.lm_.size())
@@ -583,7 +753,17 @@ Foam::label Foam::multirateRungeKutta2::step
         }
         L.E = balance && check[bi] ? b.kineticEnergy() + b.strainEnergy() : 0;
         b.levelEnergyBudget_ = 0;
-        if (!advance(b, L, 0, t, dt, t, dt))
+        const bool advanced = advance(b, L, 0, t, dt, t, dt);
+        if (advanced && Pstream::parRun())
+        {
+            // The level stages' external work and plastic dissipation were
+            // this processor's shares
+            b.Wext_ = L.Wext + returnReduce(b.Wext_ - L.Wext, sumOp<scalar>());
+            b.Dplastic_ =
+                L.Dplastic
+              + returnReduce(b.Dplastic_ - L.Dplastic, sumOp<scalar>());
+        }
+        if (!advanced)
         {
             // (where it failed, before going back)
             const point where(b.invalidPoint_);
@@ -598,6 +778,19 @@ Foam::label Foam::multirateRungeKutta2::step
             b.invalidQuantity_ = quantity;
             return bi;
         }
+    }
+
+    // The step's work and levels over all processors (a shared point
+    // counted once)
+    if (Pstream::parRun())
+    {
+        reduce(lastUpdates_, sumOp<scalar>());
+        Pstream::listCombineGather(pointsPerLevelSum_, plusEqOp<scalar>());
+        Pstream::listCombineScatter(pointsPerLevelSum_);
+    }
+    forAll(pointsPerLevel_, l)
+    {
+        pointsPerLevel_[l] = label(pointsPerLevelSum_[l] + 0.5);
     }
 
     if (balance && findIndex(check, true) >= 0)

@@ -474,7 +474,124 @@ int main(int argc, char *argv[])
         );
     }
 
-    // 6. Dump with serial point labels ---------------------------------------
+    // 6. Sums over the copies of shared points (sharedPointSums) ----------
+    if (Pstream::parRun())
+    {
+        Info<< "sums over shared points (sharedPointSums):" << nl;
+        const sharedPointSums& sums = dual.sharedSums();
+        const pointField& X = mesh.points();
+        typedef FixedList<scalar, 4> sample;
+
+        // Every copy gives (1, X): the sum is the number of copies times
+        // that, on the shared points, and the rest is left alone
+        labelList all(identity(nPts));
+        List<sample> v(nPts);
+        auto fill = [&]()
+        {
+            forAll(v, i)
+            {
+                v[i] = sample({1, X[i].x(), X[i].y(), X[i].z()});
+            }
+        };
+        fill();
+        sums.sum(all, v);
+        scalar err = 0;
+        label nShared = 0;
+        forAll(v, i)
+        {
+            const scalar m = 1/dual.pointWeight(i);
+            nShared += sums.shared(i);
+            err = max(err, mag(v[i][0] - m));
+            for (direction c = 0; c < 3; ++c)
+            {
+                err = max(err, mag(v[i][c + 1] - m*X[i][c])/(1 + mag(X[i][c])));
+            }
+            // (shared exactly where the dual counts several copies)
+            err = max(err, scalar(sums.shared(i) != (m > 1)));
+        }
+        reduce(err, maxOp<scalar>());
+        reduce(nShared, sumOp<label>());
+        check
+        (
+            err < 1e-14 && nShared > 0,
+            "every copy: sum of (1, X) = copies (1, X)", err, 1e-14
+        );
+
+        // The copies hold the same bits: their largest and smallest agree
+        List<sample> hi(v), lo(v);
+        sums.combine
+        (
+            all, hi,
+            [](sample& x, const sample& y)
+            {
+                for (direction c = 0; c < 4; ++c) x[c] = max(x[c], y[c]);
+            }
+        );
+        sums.combine
+        (
+            all, lo,
+            [](sample& x, const sample& y)
+            {
+                for (direction c = 0; c < 4; ++c) x[c] = min(x[c], y[c]);
+            }
+        );
+        scalar spread = 0;
+        forAll(v, i)
+        {
+            for (direction c = 0; c < 4; ++c)
+            {
+                spread = max(spread, hi[i][c] - lo[i][c]);
+            }
+        }
+        reduce(spread, maxOp<scalar>());
+        check(spread == 0, "copies of a sum equal to the bit", spread, 0);
+
+        // Some points listed (the same on every copy: by position), values
+        // that round differently in other orders: the listed shared points
+        // get OpenFOAM's sum to rounding, the others keep their values
+        const boundBox box(X, true);
+        DynamicList<label> listed;
+        forAll(X, i)
+        {
+            if (X[i].x() + 2*X[i].y() - X[i].z() < box.centre().x())
+            {
+                listed.append(i);
+            }
+        }
+        List<sample> part(listed.size());
+        List<scalarList> reference(4, scalarList(nPts, 0.0));
+        forAll(listed, k)
+        {
+            const point& x = X[listed[k]];
+            part[k] = sample({0.1, std::sin(x.x()), 1/(3 + x.y()), x.z()/7});
+            for (direction c = 0; c < 4; ++c)
+            {
+                reference[c][listed[k]] = part[k][c];
+            }
+        }
+        sums.sum(listed, part);
+        for (scalarList& r : reference)
+        {
+            syncTools::syncPointList(mesh, r, plusEqOp<scalar>(), 0.0);
+        }
+        scalar partErr = 0;
+        forAll(listed, k)
+        {
+            for (direction c = 0; c < 4; ++c)
+            {
+                partErr =
+                    max(partErr, mag(part[k][c] - reference[c][listed[k]]));
+            }
+        }
+        reduce(partErr, maxOp<scalar>());
+        check
+        (
+            partErr < 1e-14, "listed points: the sum of syncPointList",
+            partErr, 1e-14
+        );
+    }
+
+    // 7. Dump with serial point labels ---------------------------------------
     if (args.found("dump"))
     {
         labelList global(identity(nPts));

@@ -405,6 +405,7 @@ void Foam::multirateRungeKutta2::completeShared
 void Foam::multirateRungeKutta2::syncResiduals
 (
     solidBody& b,
+    bodyLevels& L,
     const DynamicList<label>& shared
 ) const
 {
@@ -416,7 +417,8 @@ void Foam::multirateRungeKutta2::syncResiduals
     typedef FixedList<scalar, 13> residualShare;
     stageResidual& R = b.residual_;
     const bool RJ = R.J.size();
-    List<residualShare> r(shared.size());
+    DynamicList<residualShare>& r = L.residualShares;
+    r.setSize(shared.size());
     forAll(shared, k)
     {
         const label i = shared[k];
@@ -487,7 +489,8 @@ void Foam::multirateRungeKutta2::gradients
     {
         // Each processor's share over its own edges and sub-faces, already
         // divided by the (whole) volume: the shares add up
-        List<fluxStateGradient> g(shared.size());
+        DynamicList<fluxStateGradient>& g = L.gradientShares;
+        g.setSize(shared.size());
         forAll(shared, k)
         {
             g[k] = b.G_[shared[k]];
@@ -594,7 +597,7 @@ bool Foam::multirateRungeKutta2::advance
         L.AJ[i] = RJ ? -halfh*(R.J[i] - L.AJ[i]) : 0;
     }
     b.addBoundaryFluxes(t, h, false, &P);
-    syncResiduals(b, L.sharedOnLevel[l]);
+    syncResiduals(b, L, L.sharedOnLevel[l]);
     const scalar P1 = power(b, L, l);
     b.rkStage(h, 0, &P);
     b.applyConstraints(&on);
@@ -642,7 +645,7 @@ bool Foam::multirateRungeKutta2::advance
         R.F[i] += twoByH*L.AF[i];
         if (RJ) R.J[i] += twoByH*L.AJ[i];
     }
-    syncResiduals(b, L.sharedOnLevel[l]);
+    syncResiduals(b, L, L.sharedOnLevel[l]);
     const scalar P2 = power(b, L, l);
     b.rkStage(h, 0.5, &P);
     b.applyConstraints(&on);

@@ -312,7 +312,6 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     minEnergyTheta_(1),
     levelEnergyBudget_(0),
     levelStageWeight_(0),
-    keepGradients_(false),
     stepEnergy0_(0),
     nRelaxedSteps_(0),
     minRelaxation_(1),
@@ -1651,7 +1650,7 @@ void Foam::solidBody::addInteriorFluxes
         // 0) may be spent, beyond it the edges' fluxes are blended towards
         // first order (the blend of energyStability.H): the step's
         // production over all levels then stays <= 0, as one global step's
-        if (blend && Pstream::parRun())
+        if (blend)
         {
             // (every processor blends alike: its edges' shares of the
             // level's production, in one exchange)
@@ -1845,68 +1844,11 @@ void Foam::solidBody::updateBoundaryIncrements()
         }
     }
 
-    if (Pstream::parRun() && keepGradients_)
+    // Each processor summed its own edges: add the shares of shared points
+    // (every processor lists the points on a patch of any of them)
+    if (Pstream::parRun())
     {
-        // Multirate stepping: the gradients are still needed, so the
-        // boundary points' increments are exchanged as they are (every
-        // processor lists the points on a patch of any of them)
         dual_.sharedSums().sum(bp, boundaryIncrement_);
-    }
-    else if (Pstream::parRun())
-    {
-        // Each processor summed its own edges: add the shares of shared
-        // points.  Exchanged in the gradients' list, free until the
-        // interior fluxes compute them (multirate stepping, which keeps
-        // gradients between levels, exchanges them above): each increment's
-        // doubles in the bytes of a point's single-precision gradient, so
-        // that the increments keep the states' precision without a second
-        // point-sized list
-        static_assert
-        (
-            sizeof(stateIncrement) <= sizeof(fluxStateGradient),
-            "an increment fits in a gradient"
-        );
-        fluxStateGradient zero;
-        zero = 0.0;
-        forAll(G_, i)
-        {
-            if (dual_.pointWeight(i) < 1)
-            {
-                G_[i] = zero;
-            }
-        }
-        forAll(bp, b)
-        {
-            std::memcpy
-            (
-                G_[bp[b]].data(), boundaryIncrement_[b].cdata(),
-                sizeof(stateIncrement)
-            );
-        }
-        syncTools::syncPointList
-        (
-            mesh_, G_,
-            [](fluxStateGradient& x, const fluxStateGradient& y)
-            {
-                stateIncrement a, b;
-                std::memcpy(a.data(), x.cdata(), sizeof(stateIncrement));
-                std::memcpy(b.data(), y.cdata(), sizeof(stateIncrement));
-                for (direction c = 0; c < nFluxComponents; ++c)
-                {
-                    a[c] += b[c];
-                }
-                std::memcpy(x.data(), a.cdata(), sizeof(stateIncrement));
-            },
-            zero
-        );
-        forAll(bp, b)
-        {
-            std::memcpy
-            (
-                boundaryIncrement_[b].data(), G_[bp[b]].cdata(),
-                sizeof(stateIncrement)
-            );
-        }
     }
 }
 

@@ -746,7 +746,6 @@ Foam::label Foam::multirateRungeKutta2::step
     {
         solidBody& b = bodies[bi];
         bodyLevels& L = levels_[bi];
-        b.keepGradients_ = true;
         setLevels(b, L, dt);
         save(b, L);
         if (b.lm0_.size() != b.lm_.size())

@@ -242,7 +242,8 @@ void Foam::contactRotation::apply
 (
     const UList<vector>& u,
     List<tensor>& F,
-    List<tensor>* H
+    List<tensor>* H,
+    const UList<bool>* active
 )
 {
     if (marksChanged_)
@@ -264,6 +265,10 @@ void Foam::contactRotation::apply
             continue;
         }
         const label p = points_[k];
+        if (active && !(*active)[p])
+        {
+            continue;
+        }
         const vector nState
         (
             H ? ((*H)[p] & N_[k]) : (cof(F[p]) & N_[k])

@@ -30,15 +30,132 @@ inline void addSubFaceGradient
     }
 }
 
-// The Green-Gauss sums (not yet divided by the volumes) of the boundary
-// points with the slope of the incoming waves along each patch normal N
-// from the boundary (greenGauss.H).  Along N, with t = P N and
-// Z = Zp N N + Zs (I - N N), the waves leaving through the face carry
-// t - Z v, the ones the face sends in t + Z v; the second's derivative
-// aIn = d_N t + Z d_N v becomes the boundary's
-// a_B = sum_g (dt + Z dv) C_g.N, and the change (a_B - aIn)/2 goes to d_N t
-// and Z^-1 (a_B - aIn)/2 to d_N v, which leaves the outgoing
-// d_N t - Z d_N v as it was
+// The boundary's a_B of one boundary point along its patch normals (the
+// point's boundary normals bn), from one of its sub-faces s with the
+// stage's Riemann state (tB, vB) there (greenGauss.H)
+inline void addBoundaryJump
+(
+    const Foam::dualMesh::patchSubFaces& sf,
+    const Foam::label s,
+    const Foam::UList<Foam::fluxState>& q,
+    const Foam::vector& tB,
+    const Foam::vector& vB,
+    const Foam::scalar Zp,
+    const Foam::scalar Zs,
+    const Foam::FixedList<Foam::vector, 3>& bn,
+    Foam::FixedList<Foam::vector, 3>& aB
+)
+{
+    using namespace Foam;
+    const label i = sf.point[s];
+    const scalar w = sf.nbrWeight[s];
+    const fluxState& qi = q[i];
+    const fluxState& qp = q[sf.prev[s]];
+    const fluxState& qn = q[sf.next[s]];
+    fluxState qg;
+    for (direction c = 0; c < 12; ++c)
+    {
+        qg[c] = qi[c] + w*(qp[c] + qn[c] - 2*qi[c]);
+    }
+
+    // The sub-face's normal among the point's patch normals
+    const vector& A = sf.area[s];
+    label k = 0;
+    for (label m = 1; m < 3; ++m)
+    {
+        if (mag(bn[m] & A) > mag(bn[k] & A))
+        {
+            k = m;
+        }
+    }
+    const vector& N = bn[k];
+
+    // Jumps to the Riemann state of the sub-face
+    const vector dt
+    (
+        tB
+      - vector
+        (
+            qg[3]*N.x() + qg[4]*N.y() + qg[5]*N.z(),
+            qg[6]*N.x() + qg[7]*N.y() + qg[8]*N.z(),
+            qg[9]*N.x() + qg[10]*N.y() + qg[11]*N.z()
+        )
+    );
+    const vector dv(vB - vector(qg[0], qg[1], qg[2]));
+    const scalar dvN = dv & N;
+    aB[k] += (dt + Zp*dvN*N + Zs*(dv - dvN*N))*(A & N);
+}
+
+
+// The slopes of the incoming waves of one boundary point from its a_B
+// (greenGauss.H): along N, with t = P N and Z = Zp N N + Zs (I - N N), the
+// waves leaving through the face carry t - Z v, the ones the face sends in
+// t + Z v; the second's derivative aIn = d_N t + Z d_N v becomes the
+// boundary's a_B = sum_g (dt + Z dv) C_g.N, and the change (a_B - aIn)/2
+// goes to d_N t and Z^-1 (a_B - aIn)/2 to d_N v, which leaves the outgoing
+// d_N t - Z d_N v as it was.  Gi: the Green-Gauss sums (not yet divided by
+// the volume; linear in them and in a_B, so that processors' partial sums
+// add up to the map of the whole)
+inline void applyIncomingSlopes
+(
+    const Foam::FixedList<Foam::vector, 3>& bn,
+    const Foam::FixedList<Foam::vector, 3>& aB,
+    const Foam::scalar Zp,
+    const Foam::scalar Zs,
+    Foam::fluxStateGradient& Gi
+)
+{
+    using namespace Foam;
+    for (label k = 0; k < 3; ++k)
+    {
+        const vector& N = bn[k];
+        if (magSqr(N) < 0.5)
+        {
+            break;
+        }
+
+        // Derivatives along N of v and of t = P N
+        const vector dv
+        (
+            gradientOf(Gi, 0) & N,
+            gradientOf(Gi, 1) & N,
+            gradientOf(Gi, 2) & N
+        );
+        vector dt(Zero);
+        for (direction a = 0; a < 3; ++a)
+        {
+            for (direction c = 0; c < 3; ++c)
+            {
+                dt[a] += (gradientOf(Gi, 3 + 3*a + c) & N)*N[c];
+            }
+        }
+        const scalar dvN = dv & N;
+        const vector aIn(dt + Zp*dvN*N + Zs*(dv - dvN*N));
+        const vector half(0.5*(aB[k] - aIn));
+
+        // d_N t += half (as P += half N along N), d_N v += Z^-1 half
+        // (no tangential waves without a shear impedance)
+        const scalar halfN = half & N;
+        const vector halfT(half - halfN*N);
+        const vector dvIncrement
+        (
+            (halfN/Zp)*N + (Zs > VSMALL ? halfT/Zs : vector::zero)
+        );
+        const vector dtIncrement(Zs > VSMALL ? half : halfN*N);
+        for (direction a = 0; a < 3; ++a)
+        {
+            addGradient(Gi, a, dvIncrement[a]*N);
+            for (direction c = 0; c < 3; ++c)
+            {
+                addGradient(Gi, 3 + 3*a + c, (dtIncrement[a]*N[c])*N);
+            }
+        }
+    }
+}
+
+
+// The Green-Gauss sums of the boundary points with the slope of the
+// incoming waves along each patch normal N from the boundary
 void boundarySlopes
 (
     const Foam::dualMesh& dual,
@@ -77,42 +194,7 @@ void boundarySlopes
                 continue;
             }
             const label b = index[i];
-            const scalar w = sf.nbrWeight[s];
-            const fluxState& qi = q[i];
-            const fluxState& qp = q[sf.prev[s]];
-            const fluxState& qn = q[sf.next[s]];
-            fluxState qg;
-            for (direction c = 0; c < 12; ++c)
-            {
-                qg[c] = qi[c] + w*(qp[c] + qn[c] - 2*qi[c]);
-            }
-
-            // The sub-face's normal among the point's patch normals
-            const vector& A = sf.area[s];
-            label k = 0;
-            for (label m = 1; m < 3; ++m)
-            {
-                if (mag(bn[b][m] & A) > mag(bn[b][k] & A))
-                {
-                    k = m;
-                }
-            }
-            const vector& N = bn[b][k];
-
-            // Jumps to the Riemann state of the sub-face
-            const vector dt
-            (
-                tB[s]
-              - vector
-                (
-                    qg[3]*N.x() + qg[4]*N.y() + qg[5]*N.z(),
-                    qg[6]*N.x() + qg[7]*N.y() + qg[8]*N.z(),
-                    qg[9]*N.x() + qg[10]*N.y() + qg[11]*N.z()
-                )
-            );
-            const vector dv(vB[s] - vector(qg[0], qg[1], qg[2]));
-            const scalar dvN = dv & N;
-            aB[b][k] += (dt + Zp*dvN*N + Zs*(dv - dvN*N))*(A & N);
+            addBoundaryJump(sf, s, q, tB[s], vB[s], Zp, Zs, bn[b], aB[b]);
         }
     }
 
@@ -125,52 +207,7 @@ void boundarySlopes
         {
             continue;
         }
-        fluxStateGradient& Gi = G[bp[b]];
-        for (label k = 0; k < 3; ++k)
-        {
-            const vector& N = bn[b][k];
-            if (magSqr(N) < 0.5)
-            {
-                break;
-            }
-
-            // Derivatives along N of v and of t = P N
-            const vector dv
-            (
-                gradientOf(Gi, 0) & N,
-                gradientOf(Gi, 1) & N,
-                gradientOf(Gi, 2) & N
-            );
-            vector dt(Zero);
-            for (direction a = 0; a < 3; ++a)
-            {
-                for (direction c = 0; c < 3; ++c)
-                {
-                    dt[a] += (gradientOf(Gi, 3 + 3*a + c) & N)*N[c];
-                }
-            }
-            const scalar dvN = dv & N;
-            const vector aIn(dt + Zp*dvN*N + Zs*(dv - dvN*N));
-            const vector half(0.5*(aB[b][k] - aIn));
-
-            // d_N t += half (as P += half N along N), d_N v += Z^-1 half
-            // (no tangential waves without a shear impedance)
-            const scalar halfN = half & N;
-            const vector halfT(half - halfN*N);
-            const vector dvIncrement
-            (
-                (halfN/Zp)*N + (Zs > VSMALL ? halfT/Zs : vector::zero)
-            );
-            const vector dtIncrement(Zs > VSMALL ? half : halfN*N);
-            for (direction a = 0; a < 3; ++a)
-            {
-                addGradient(Gi, a, dvIncrement[a]*N);
-                for (direction c = 0; c < 3; ++c)
-                {
-                    addGradient(Gi, 3 + 3*a + c, (dtIncrement[a]*N[c])*N);
-                }
-            }
-        }
+        applyIncomingSlopes(bn[b], aB[b], Zp, Zs, G[bp[b]]);
     }
 }
 
@@ -283,7 +320,11 @@ void Foam::greenGaussGradient
     const labelUList& points,
     const labelUList& pointSubFaceStart,
     const labelUList& subFacePatch,
-    const labelUList& subFace
+    const labelUList& subFace,
+    const stageResidual* R,
+    const scalar Zp,
+    const scalar Zs,
+    const UList<bool>* riemannPoints
 )
 {
     const labelList& es = dual.edgeStart();
@@ -331,6 +372,47 @@ void Foam::greenGaussGradient
             const dualMesh::patchSubFaces& sf = dual.subFaces(subFacePatch[m]);
             const label s = subFace[m];
             addSubFaceGradient(sf, s, q, G[i]);
+        }
+    }
+
+    // Boundary points with the stage's boundary states of their own
+    // sub-faces (the full pass's boundarySlopes, point by point; every
+    // listed boundary point, also on a processor without its sub-faces)
+    if (R)
+    {
+        const List<FixedList<vector, 3>>& bn = dual.boundaryNormals();
+        const labelList& index = dual.boundaryIndex();
+        for (const label i : points)
+        {
+            const label b = index[i];
+            if (b < 0 || (riemannPoints && !(*riemannPoints)[i]))
+            {
+                continue;
+            }
+            FixedList<vector, 3> aB;
+            aB = Zero;
+            for
+            (
+                label m = pointSubFaceStart[i];
+                m < pointSubFaceStart[i + 1];
+                ++m
+            )
+            {
+                const label patchi = subFacePatch[m];
+                if (!R->boundarySet[patchi])
+                {
+                    continue;
+                }
+                const label s = subFace[m];
+                addBoundaryJump
+                (
+                    dual.subFaces(patchi), s, q,
+                    R->boundaryTraction[patchi][s],
+                    R->boundaryVelocity[patchi][s],
+                    Zp, Zs, bn[b], aB
+                );
+            }
+            applyIncomingSlopes(bn[b], aB, Zp, Zs, G[i]);
         }
     }
 

@@ -526,7 +526,8 @@ void Foam::bodyScheme::chooseFromScene
     const scalar planarMach,
     const scalar impactMach,
     const bool planeWave,
-    const bool contactPatches
+    const bool contactPatches,
+    const bool multirate
 )
 {
     // A plane-wave impact: the upwind F flux, with van Albada (Barth-
@@ -619,6 +620,14 @@ void Foam::bodyScheme::chooseFromScene
         const bool curved = (planarMach <= 0 && impactMach > 0);
         const bool weak = (impactMach < shockMachThreshold);
         limiter_ = curved && weak ? word("superbee") : shockLimiter_;
+        // (multirate stepping limits edge by edge: a level's edges are
+        // evaluated in turns, so a point's clipping factor over all of its
+        // edges has no one time)
+        const bool perEdge = multirate && limiter_ == "barthJespersen";
+        if (perEdge)
+        {
+            limiter_ = "vanAlbada";
+        }
         OStringStream why;
         why << "auto: ";
         if (curved)
@@ -634,6 +643,8 @@ void Foam::bodyScheme::chooseFromScene
         (
             curved && weak
           ? ": fronts kept within two cells, where their capture dissipates"
+          : perEdge
+          ? "; multirate stepping: limited per edge"
           : shockLimiter_ == "vanAlbada"
           ? "; nu >= 0.45: limited per edge"
           : "; per point, no new extrema"
@@ -655,7 +666,7 @@ void Foam::bodyScheme::chooseFromScene
         const bool plasticCurved = plastic_ && !planeWave;
         onsetStabilisation_ =
             contactPatches && !FStabilisation_ && !unlimited
-         && !plasticCurved;
+         && !plasticCurved && !multirate;
         setChoice
         (
             "onsetStabilisation",
@@ -669,6 +680,9 @@ void Foam::bodyScheme::chooseFromScene
           + (noLimiter ? "; Barth-Jespersen on those points)" : ")")
           : FStabilisation_
           ? "no  (auto: the upwind F flux is on everywhere)"
+          : contactPatches && multirate
+          ? "no  (auto: multirate stepping: the onset zone's upwind F flux"
+            " and Riemann slopes need one global step)"
           : unlimited
           ? "no  (auto: limiter none: unlimited, the Riemann boundary slopes"
             " crush a struck face)"

@@ -513,7 +513,8 @@ void Foam::solidBody::chooseFromScene
 (
     const scalar planarMach,
     const scalar impactMach,
-    const bool planeWave
+    const bool planeWave,
+    const bool multirate
 )
 {
     bool contactPatches = false;
@@ -523,7 +524,7 @@ void Foam::solidBody::chooseFromScene
     }
     scheme_->chooseFromScene
     (
-        planarMach, impactMach, planeWave, contactPatches
+        planarMach, impactMach, planeWave, contactPatches, multirate
     );
     if (scheme_->secondOrder() && limiter_->type() != scheme_->limiter())
     {
@@ -2042,7 +2043,10 @@ void Foam::solidBody::applyConstraints(const UList<bool>* active)
     // materials, whose energy a rotation changes)
     if (scheme_->contactRotation())
     {
-        contactRotation_->apply(u_, F_, scheme_->HLaw() ? &H_ : nullptr);
+        contactRotation_->apply
+        (
+            u_, F_, scheme_->HLaw() ? &H_ : nullptr, active
+        );
     }
     symmetry_->apply(lm_, u_, active);
     // A point on a symmetry plane stands for its control volume completed

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "multirateRungeKutta2.H"
+#include "acousticFormulas.H"
 #include "greenGauss.H"
 #include "Time.H"
 #include "tvdRungeKutta2.H"
@@ -14,12 +15,19 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
 (
     const Time& runTime,
     const PtrList<solidBody>& bodies,
-    const PtrList<contactPair>& contacts,
+    PtrList<contactPair>& contacts,
     const label nLevels
 )
 :
     nLevels_(nLevels),
     levels_(bodies.size()),
+    contacts_(contacts),
+    pairBodyA_(contacts.size(), -1),
+    pairBodyB_(contacts.size(), -1),
+    pairLevel_(contacts.size(), 0),
+    pairMinLevel_(contacts.size(), 0),
+    finest_(0),
+    boundaryFirst_(false),
     lastUpdates_(0),
     pointsPerLevel_(nLevels, 0),
     pointsPerLevelSum_(nLevels, 0.0)
@@ -33,13 +41,17 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
             << "    Change that, or use multirateLevels 1 (one global step)."
             << exit(FatalIOError);
     };
-    if (contacts.size())
+    // Each pair's bodies
+    forAll(contacts, p)
     {
-        unsupported
-        (
-            "contact pairs (constant/contactProperties): their gap limit"
-            " and impulses belong to one shared step"
-        );
+        forAll(bodies, bi)
+        {
+            if (&contacts[p].bodyA() == &bodies[bi]) pairBodyA_[p] = bi;
+            if (&contacts[p].bodyB() == &bodies[bi]) pairBodyB_[p] = bi;
+        }
+        Info<< "Multirate stepping: contact pair " << contacts[p].name()
+            << ": the points of both patches step together, on the finest"
+            << " level of any of them" << nl;
     }
 
     forAll(bodies, bi)
@@ -58,11 +70,20 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
         }
         if (s.secondOrder() && s.riemannBoundarySlope())
         {
-            unsupported(body + "boundarySlope riemann (use interior)");
+            boundaryFirst_ = true;
         }
         if (s.deformedPressure())
         {
             unsupported(body + "deformedPressure yes");
+        }
+        if (s.onsetStabilisation())
+        {
+            // (solidBody::addInteriorFluxes: the zone's edges and Riemann
+            // slopes belong to one step)
+            Info<< "Body " << b.name() << ": with multirate stepping"
+                << " onsetStabilisation is not applied (the onset zone's"
+                << " upwind F flux and Riemann slopes need one global step)"
+                << nl;
         }
         if (s.energyStable())
         {
@@ -151,17 +172,13 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::multirateRungeKutta2::setLevels
+void Foam::multirateRungeKutta2::initialLevels
 (
-    const solidBody& b,
     bodyLevels& L,
     const scalar dt
-)
+) const
 {
     const label K = nLevels_ - 1;
-    const dualMesh& dual = b.dual_;
-    const labelList& es = dual.edgeStart();
-    const labelList& ee = dual.edgeEnd();
     labelList& level = L.level;
 
     // The smallest level whose step is within the point's own (a relative
@@ -177,6 +194,19 @@ void Foam::multirateRungeKutta2::setLevels
         }
         level[i] = l;
     }
+}
+
+
+void Foam::multirateRungeKutta2::smoothLevels
+(
+    const solidBody& b,
+    bodyLevels& L
+) const
+{
+    const dualMesh& dual = b.dual_;
+    const labelList& es = dual.edgeStart();
+    const labelList& ee = dual.edgeEnd();
+    labelList& level = L.level;
 
     // A point shared by processors on one level (the finer), where its
     // copies' own steps differ in rounding.  True if that changed one
@@ -245,6 +275,81 @@ void Foam::multirateRungeKutta2::setLevels
             reduce(changed, orOp<bool>());
         }
     }
+}
+
+
+void Foam::multirateRungeKutta2::assignLevels
+(
+    const PtrList<solidBody>& bodies,
+    const scalar dt
+)
+{
+    forAll(bodies, bi)
+    {
+        initialLevels(levels_[bi], dt);
+        smoothLevels(bodies[bi], levels_[bi]);
+    }
+
+    // Contact pairs: all points of both patches on one level, the finest
+    // of any of them (and at least the one the step's gap limit took,
+    // deltaT), so that the pair's two sides step together and its Riemann
+    // problems, closing allowances and impulses belong to one step of
+    // that level; their neighbours then grade away from it.  Raising a
+    // pair's points can raise their neighbours, and with them points of
+    // the pair again: repeat until no point moves (levels only rise)
+    for (bool changed = contacts_.size(); changed; )
+    {
+        changed = false;
+        forAll(contacts_, p)
+        {
+            const contactPair& c = contacts_[p];
+            labelList& levelA = levels_[pairBodyA_[p]].level;
+            labelList& levelB = levels_[pairBodyB_[p]].level;
+            label lp = pairMinLevel_[p];
+            for (const label i : c.pointsA()) lp = max(lp, levelA[i]);
+            for (const label i : c.pointsB()) lp = max(lp, levelB[i]);
+            reduce(lp, maxOp<label>());
+            pairLevel_[p] = lp;
+            for (const label i : c.pointsA())
+            {
+                if (levelA[i] != lp)
+                {
+                    levelA[i] = lp;
+                    changed = true;
+                }
+            }
+            for (const label i : c.pointsB())
+            {
+                if (levelB[i] != lp)
+                {
+                    levelB[i] = lp;
+                    changed = true;
+                }
+            }
+        }
+        reduce(changed, orOp<bool>());
+        if (changed)
+        {
+            forAll(bodies, bi)
+            {
+                smoothLevels(bodies[bi], levels_[bi]);
+            }
+        }
+    }
+}
+
+
+void Foam::multirateRungeKutta2::levelLists
+(
+    const solidBody& b,
+    bodyLevels& L
+)
+{
+    const dualMesh& dual = b.dual_;
+    const labelList& es = dual.edgeStart();
+    const labelList& ee = dual.edgeEnd();
+    const labelList& level = L.level;
+    const labelList& shared = L.sharedPoints;
 
     for (label l = 0; l < nLevels_; ++l)
     {
@@ -469,6 +574,7 @@ void Foam::multirateRungeKutta2::gradients
 (
     solidBody& b,
     bodyLevels& L,
+    const label l,
     const DynamicList<label>& points,
     const DynamicList<label>& shared
 ) const
@@ -479,10 +585,24 @@ void Foam::multirateRungeKutta2::gradients
     }
     if (points.size())
     {
+        // Riemann boundary slopes: the level's own points, from this
+        // stage's boundary states (the boundary and contact fluxes come
+        // first, boundaryFirst_).  The finer points of the first stage's
+        // list have none at its time (theirs come in their own stages):
+        // their slopes, which only the predictor's finer-edge fluxes use,
+        // are the interior ones
+        const bool riemann = b.scheme_->riemannBoundarySlope();
         greenGaussGradient
         (
             b.dual_, b.q_, b.G_, points,
-            L.pointSubFaceStart, L.subFacePatch, L.subFace
+            L.pointSubFaceStart, L.subFacePatch, L.subFace,
+            riemann ? &b.residual_ : nullptr,
+            b.material_->Zp(),
+            acousticFormulas::interiorShearImpedance
+            (
+                b.material_->Zp(), b.material_->Zs()
+            ),
+            &L.onLevel[l]
         );
     }
     if (Pstream::parRun())
@@ -536,9 +656,11 @@ void Foam::multirateRungeKutta2::ownEdgeFluxes
     const scalar halfh
 ) const
 {
-    // First in the stage: the residuals of the level's points and coarser
-    // neighbours then hold only these fluxes (energyStable's blend of them,
-    // with their weight h/2 in the step's energy)
+    // First in the stage (with boundaryFirst_, the boundary and contact
+    // residuals are set aside meanwhile): the residuals of the level's
+    // points and coarser neighbours then hold only these fluxes
+    // (energyStable's blend of them, with their weight h/2 in the step's
+    // energy)
     b.levelStageWeight_ = halfh;
     b.addInteriorFluxes(&L.edges[l], &L.edgePoints[l]);
     const stageResidual& R = b.residual_;
@@ -552,33 +674,75 @@ void Foam::multirateRungeKutta2::ownEdgeFluxes
 }
 
 
-bool Foam::multirateRungeKutta2::advance
+void Foam::multirateRungeKutta2::startStage
 (
     solidBody& b,
     bodyLevels& L,
     const label l,
+    const bool second,
     const scalar t,
     const scalar h,
     const scalar tc,
     const scalar hc
-)
+) const
 {
     const DynamicList<label>& P = L.points[l];
-    const UList<bool>& on = L.onLevel[l];
-    stageResidual& R = b.residual_;
-    const bool RJ = R.J.size();
-    const scalar halfh = 0.5*h;
+    const scalar ts = second ? t + h : t;
 
-    // Stage 1 at t
-    interpolateCoarser(b, L, l, t, tc, hc);
-    b.storeState(P);
-    for (const label i : P)
+    if (second)
     {
-        L.qStart[i] = b.q_[i];
+        // From the predicted state (the finer levels' steps interpolated
+        // it)
+        for (const label i : P)
+        {
+            b.q_[i] = L.qPredicted[i];
+        }
+    }
+    interpolateCoarser(b, L, l, ts, tc, hc);
+    if (!second)
+    {
+        b.storeState(P);
+        for (const label i : P)
+        {
+            L.qStart[i] = b.q_[i];
+        }
     }
     resetResiduals(b, L, l);
-    gradients(b, L, L.gradient1[l], L.sharedGradient1[l]);
+    if (boundaryFirst_)
+    {
+        b.addBoundaryFluxes(ts, h, second, &P);
+        return;
+    }
+    interiorStage(b, L, l, second, h);
+    b.addBoundaryFluxes(ts, h, second, &P);
+    if (second)
+    {
+        addFinerIntegral(b, L, l, h);
+    }
+}
 
+
+void Foam::multirateRungeKutta2::interiorStage
+(
+    solidBody& b,
+    bodyLevels& L,
+    const label l,
+    const bool second,
+    const scalar h
+) const
+{
+    const DynamicList<label>& P = L.points[l];
+    const scalar halfh = 0.5*h;
+    if (second)
+    {
+        gradients(b, L, l, P, L.sharedOnLevel[l]);
+        ownEdgeFluxes(b, L, l, halfh);
+        return;
+    }
+
+    stageResidual& R = b.residual_;
+    const bool RJ = R.J.size();
+    gradients(b, L, l, L.gradient1[l], L.sharedGradient1[l]);
     ownEdgeFluxes(b, L, l, halfh);
 
     // The finer edges' fluxes at t: in the predictor, and out of the final
@@ -596,72 +760,194 @@ bool Foam::multirateRungeKutta2::advance
         L.AF[i] = -halfh*(R.F[i] - L.AF[i]);
         L.AJ[i] = RJ ? -halfh*(R.J[i] - L.AJ[i]) : 0;
     }
-    b.addBoundaryFluxes(t, h, false, &P);
-    syncResiduals(b, L, L.sharedOnLevel[l]);
-    const scalar P1 = power(b, L, l);
-    b.rkStage(h, 0, &P);
-    b.applyConstraints(&on);
-    if (!b.updateConstitutive(&P))
-    {
-        return false;
-    }
-    for (const label i : P)
-    {
-        L.qPredicted[i] = b.q_[i];
-    }
-    lastUpdates_ += L.levelWeight[l];
+}
 
-    // The finer levels: two steps each
-    if (L.finest > l)
+
+void Foam::multirateRungeKutta2::interiorAfterBoundary
+(
+    solidBody& b,
+    bodyLevels& L,
+    const label l,
+    const bool second,
+    const scalar h
+) const
+{
+    // The gradients take the boundary states of this stage (Riemann
+    // boundary slopes); the boundary and contact residuals wait aside
+    // while the interior fluxes (and the energy blend of them) go in
+    const DynamicList<label>& P = L.points[l];
+    stageResidual& R = b.residual_;
+    const bool RJ = R.J.size();
+    L.asideM.setSize(P.size());
+    L.asideF.setSize(P.size());
+    L.asideJ.setSize(RJ ? P.size() : 0);
+    forAll(P, k)
     {
-        if
-        (
-            !advance(b, L, l + 1, t, halfh, t, h)
-         || !advance(b, L, l + 1, t + halfh, halfh, t, h)
-        )
+        const label i = P[k];
+        L.asideM[k] = R.momentum[i];
+        L.asideF[k] = R.F[i];
+        R.momentum[i] = Zero;
+        R.F[i] = Zero;
+        if (RJ)
         {
-            return false;
+            L.asideJ[k] = R.J[i];
+            R.J[i] = 0;
         }
     }
 
-    // Stage 2 at t + h, from the predicted state (the finer levels'
-    // steps interpolated it)
-    for (const label i : P)
+    interiorStage(b, L, l, second, h);
+
+    forAll(P, k)
     {
-        b.q_[i] = L.qPredicted[i];
+        const label i = P[k];
+        R.momentum[i] += L.asideM[k];
+        R.F[i] += L.asideF[k];
+        if (RJ)
+        {
+            R.J[i] += L.asideJ[k];
+        }
     }
-    interpolateCoarser(b, L, l, t + h, tc, hc);
-    resetResiduals(b, L, l);
-    gradients(b, L, P, L.sharedOnLevel[l]);
-    ownEdgeFluxes(b, L, l, halfh);
-    b.addBoundaryFluxes(t + h, h, true, &P);
+    if (second)
+    {
+        addFinerIntegral(b, L, l, h);
+    }
+}
+
+
+void Foam::multirateRungeKutta2::addFinerIntegral
+(
+    solidBody& b,
+    const bodyLevels& L,
+    const label l,
+    const scalar h
+) const
+{
     // U^n+1 = U^n + h/2 (R1 + R2) over the level's edges, plus the finer
     // edges' integral: the stage-2 form 1/2 (U^n + U* + h R) with R2
     // completed by 2/h A
+    stageResidual& R = b.residual_;
+    const bool RJ = R.J.size();
     const scalar twoByH = 2/h;
-    for (const label i : P)
+    for (const label i : L.points[l])
     {
         R.momentum[i] += twoByH*L.Am[i];
         R.F[i] += twoByH*L.AF[i];
         if (RJ) R.J[i] += twoByH*L.AJ[i];
     }
+}
+
+
+bool Foam::multirateRungeKutta2::finishStage
+(
+    solidBody& b,
+    bodyLevels& L,
+    const label l,
+    const bool second,
+    const scalar h,
+    scalar& P1
+)
+{
+    const DynamicList<label>& P = L.points[l];
     syncResiduals(b, L, L.sharedOnLevel[l]);
-    const scalar P2 = power(b, L, l);
-    b.rkStage(h, 0.5, &P);
-    b.applyConstraints(&on);
+    const scalar Ps = power(b, L, l);
+    b.rkStage(h, second ? 0.5 : 0, &P);
+    b.applyConstraints(&L.onLevel[l]);
     if (!b.updateConstitutive(&P))
     {
         return false;
     }
-    b.endStep(&P);
-    b.Wext_ += halfh*(P1 + P2);
+    if (second)
+    {
+        b.endStep(&P);
+        b.Wext_ += 0.5*h*(P1 + Ps);
+    }
+    else
+    {
+        for (const label i : P)
+        {
+            L.qPredicted[i] = b.q_[i];
+        }
+        P1 = Ps;
+    }
     lastUpdates_ += L.levelWeight[l];
-
     return true;
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+Foam::label Foam::multirateRungeKutta2::advance
+(
+    PtrList<solidBody>& bodies,
+    const label l,
+    const scalar t,
+    const scalar h,
+    const scalar tc,
+    const scalar hc
+)
+{
+    // Every body's level-l points stage by stage together, so that the
+    // contact pairs on this level see both of their sides at the stage's
+    // time (a body's own operations are those of a body stepped alone)
+    scalarList P1(bodies.size(), 0.0);
+    auto stage = [&](const bool second)
+    {
+        forAll(bodies, bi)
+        {
+            if (levels_[bi].finest >= l)
+            {
+                startStage(bodies[bi], levels_[bi], l, second, t, h, tc, hc);
+            }
+        }
+        forAll(contacts_, p)
+        {
+            if (pairLevel_[p] == l)
+            {
+                contacts_[p].addFluxes();
+            }
+        }
+        forAll(bodies, bi)
+        {
+            if (levels_[bi].finest < l)
+            {
+                continue;
+            }
+            if (boundaryFirst_)
+            {
+                interiorAfterBoundary(bodies[bi], levels_[bi], l, second, h);
+            }
+            if (!finishStage(bodies[bi], levels_[bi], l, second, h, P1[bi]))
+            {
+                return bi;
+            }
+        }
+        return label(-1);
+    };
+
+    forAll(contacts_, p)
+    {
+        if (pairLevel_[p] == l)
+        {
+            contacts_[p].startStep(h);
+        }
+    }
+
+    // Stage 1 at t, the finer levels' two steps each, stage 2 at t + h
+    label failed = stage(false);
+    if (failed < 0 && finest_ > l)
+    {
+        const scalar halfh = 0.5*h;
+        failed = advance(bodies, l + 1, t, halfh, t, h);
+        if (failed < 0)
+        {
+            failed = advance(bodies, l + 1, t + halfh, halfh, t, h);
+        }
+    }
+    if (failed < 0)
+    {
+        failed = stage(true);
+    }
+    return failed;
+}
+
 
 Foam::scalar Foam::multirateRungeKutta2::deltaT
 (
@@ -681,7 +967,29 @@ Foam::scalar Foam::multirateRungeKutta2::deltaT
         }
     }
     reduce(dtMin, minOp<scalar>());
-    return dtMin*scalar(label(1) << (nLevels_ - 1));
+    scalar dt = dtMin*scalar(label(1) << (nLevels_ - 1));
+
+    // Contact pairs: a closing gap closes at the end of a step of the
+    // pair's level, as with one global step (tvdRungeKutta2::stableDeltaT:
+    // gaps closing within a quarter of that step are not waited for).
+    // The pair keeps at least this level in the step (assignLevels), which
+    // may be shorter (write times) and so have coarser points
+    if (contacts_.size())
+    {
+        pairMinLevel_ = 0;
+        assignLevels(bodies, dt);
+        scalar dtGap = GREAT;
+        forAll(contacts_, p)
+        {
+            const label lp = pairLevel_[p];
+            const scalar scale = scalar(label(1) << lp);
+            const scalar hp = dt/scale;
+            dtGap = min(dtGap, scale*contacts_[p].deltaTLimit(0.25*hp));
+            pairMinLevel_[p] = lp;
+        }
+        dt = min(dt, dtGap);
+    }
+    return dt;
 }
 
 
@@ -742,11 +1050,14 @@ Foam::label Foam::multirateRungeKutta2::step
         b.restoreState();
     };
 
+    assignLevels(bodies, dt);
+    finest_ = 0;
     forAll(bodies, bi)
     {
         solidBody& b = bodies[bi];
         bodyLevels& L = levels_[bi];
-        setLevels(b, L, dt);
+        levelLists(b, L);
+        finest_ = max(finest_, L.finest);
         save(b, L);
         if (b.lm0_.size() != b.lm_.size())
         {
@@ -755,30 +1066,37 @@ Foam::label Foam::multirateRungeKutta2::step
         }
         L.E = balance && check[bi] ? b.kineticEnergy() + b.strainEnergy() : 0;
         b.levelEnergyBudget_ = 0;
-        const bool advanced = advance(b, L, 0, t, dt, t, dt);
-        if (advanced && Pstream::parRun())
+    }
+
+    const label failed = advance(bodies, 0, t, dt, t, dt);
+    if (failed >= 0)
+    {
+        // (where it failed, before going back)
+        solidBody& b = bodies[failed];
+        const point where(b.invalidPoint_);
+        const scalar value = b.invalidValue_;
+        const word quantity(b.invalidQuantity_);
+        forAll(bodies, bi)
         {
-            // The level stages' external work and plastic dissipation were
-            // this processor's shares
+            restore(bodies[bi], levels_[bi]);
+        }
+        b.invalidPoint_ = where;
+        b.invalidValue_ = value;
+        b.invalidQuantity_ = quantity;
+        return failed;
+    }
+    if (Pstream::parRun())
+    {
+        // The level stages' external work and plastic dissipation were
+        // this processor's shares
+        forAll(bodies, bi)
+        {
+            solidBody& b = bodies[bi];
+            const bodyLevels& L = levels_[bi];
             b.Wext_ = L.Wext + returnReduce(b.Wext_ - L.Wext, sumOp<scalar>());
             b.Dplastic_ =
                 L.Dplastic
               + returnReduce(b.Dplastic_ - L.Dplastic, sumOp<scalar>());
-        }
-        if (!advanced)
-        {
-            // (where it failed, before going back)
-            const point where(b.invalidPoint_);
-            const scalar value = b.invalidValue_;
-            const word quantity(b.invalidQuantity_);
-            for (label k = 0; k <= bi; ++k)
-            {
-                restore(bodies[k], levels_[k]);
-            }
-            b.invalidPoint_ = where;
-            b.invalidValue_ = value;
-            b.invalidQuantity_ = quantity;
-            return bi;
         }
     }
 

@@ -39,8 +39,9 @@ void Foam::stageResidual::setBoundarySize
     forAll(boundaryTraction, patchi)
     {
         const label n = keep ? dual.subFaces(patchi).point.size() : 0;
-        boundaryTraction[patchi].setSize(n);
-        boundaryVelocity[patchi].setSize(n);
+        // (zero until a stage gives them)
+        boundaryTraction[patchi].setSize(n, Zero);
+        boundaryVelocity[patchi].setSize(n, Zero);
     }
 }
 

@@ -27,6 +27,7 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
     pairLevel_(contacts.size(), 0),
     pairMinLevel_(contacts.size(), 0),
     finest_(0),
+    assignedDt_(-1),
     boundaryFirst_(false),
     lastUpdates_(0),
     pointsPerLevel_(nLevels, 0),
@@ -163,6 +164,7 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
                 L.subFace[m] = s;
             }
         }
+        L.stagePower.setSize(nLevels_, 0.0);
         L.Am.setSize(n, Zero);
         L.AF.setSize(n, Zero);
         L.AJ.setSize(n, 0.0);
@@ -887,7 +889,6 @@ Foam::label Foam::multirateRungeKutta2::advance
     // Every body's level-l points stage by stage together, so that the
     // contact pairs on this level see both of their sides at the stage's
     // time (a body's own operations are those of a body stepped alone)
-    scalarList P1(bodies.size(), 0.0);
     auto stage = [&](const bool second)
     {
         forAll(bodies, bi)
@@ -914,7 +915,8 @@ Foam::label Foam::multirateRungeKutta2::advance
             {
                 interiorAfterBoundary(bodies[bi], levels_[bi], l, second, h);
             }
-            if (!finishStage(bodies[bi], levels_[bi], l, second, h, P1[bi]))
+            bodyLevels& L = levels_[bi];
+            if (!finishStage(bodies[bi], L, l, second, h, L.stagePower[l]))
             {
                 return bi;
             }
@@ -978,6 +980,7 @@ Foam::scalar Foam::multirateRungeKutta2::deltaT
     {
         pairMinLevel_ = 0;
         assignLevels(bodies, dt);
+        assignedDt_ = dt;
         scalar dtGap = GREAT;
         forAll(contacts_, p)
         {
@@ -987,7 +990,12 @@ Foam::scalar Foam::multirateRungeKutta2::deltaT
             dtGap = min(dtGap, scale*contacts_[p].deltaTLimit(0.25*hp));
             pairMinLevel_[p] = lp;
         }
-        dt = min(dt, dtGap);
+        if (dtGap < dt)
+        {
+            // (the step's levels are then those of the shorter step)
+            dt = dtGap;
+            assignedDt_ = -1;
+        }
     }
     return dt;
 }
@@ -1050,7 +1058,13 @@ Foam::label Foam::multirateRungeKutta2::step
         b.restoreState();
     };
 
-    assignLevels(bodies, dt);
+    // (deltaT assigned them already for this step when it had to, for the
+    // pairs' gap limit: the same levels)
+    if (dt != assignedDt_)
+    {
+        assignLevels(bodies, dt);
+    }
+    assignedDt_ = -1;
     finest_ = 0;
     forAll(bodies, bi)
     {

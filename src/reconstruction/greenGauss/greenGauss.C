@@ -318,6 +318,8 @@ void Foam::greenGaussGradient
     const UList<fluxState>& q,
     List<fluxStateGradient>& G,
     const labelUList& points,
+    const labelUList& edges,
+    const UList<bool>& listed,
     const labelUList& pointSubFaceStart,
     const labelUList& subFacePatch,
     const labelUList& subFace,
@@ -332,36 +334,52 @@ void Foam::greenGaussGradient
     const vectorField& Ne = dual.edgeNormals();
     const scalarField& Ae = dual.edgeMagSf();
     const scalarField& V = dual.volumes();
-    const labelList& pes = dual.pointEdgeStart();
-    const labelList& pe = dual.pointEdges();
 
-    // Each listed point sums its own edges (an edge between two listed
-    // points is visited from both: the sum of the full pass, per point)
     for (const label i : points)
     {
-        gradientScalar* __restrict__ Gi = G[i].data();
-        for (label k = 0; k < fluxStateGradient::size(); ++k)
+        for (gradientScalar& g : G[i])
         {
-            Gi[k] = 0;
+            g = 0;
         }
-        const scalar* __restrict__ qi = q[i].cdata();
-        const direction n = nFluxComponents;
-        for (label k = pes[i]; k < pes[i + 1]; ++k)
+    }
+
+    // The full pass's edge loop over the listed edges: each end that is
+    // listed gains (q_j - q_i) C/2 (an edge between two listed points is
+    // formed once for both).  An end that is not listed sums into a
+    // scratch gradient, which keeps the loop free of branches
+    fluxStateGradient scratch;
+    scratch = 0.0;
+    const label nEdges = edges.size();
+    for (label k = 0; k < nEdges; ++k)
+    {
+        const label e = edges[k];
+        const label i = es[e], j = ee[e];
+        if (k + edgePrefetchDistance < nEdges)
         {
-            const label e = pe[k];
-            // (the normal points from the edge's start to its end)
-            const bool start = (es[e] == i);
-            const label j = start ? ee[e] : es[e];
-            const vector C((start ? 0.5 : -0.5)*Ae[e]*Ne[e]);
-            const gradientScalar Cx = C.x(), Cy = C.y(), Cz = C.z();
-            const scalar* __restrict__ qj = q[j].cdata();
-            for (direction c = 0; c < n; ++c)
-            {
-                const gradientScalar f = qj[c] - qi[c];
-                Gi[c] += f*Cx;
-                Gi[n + c] += f*Cy;
-                Gi[2*n + c] += f*Cz;
-            }
+            const label jAhead = ee[edges[k + edgePrefetchDistance]];
+            prefetchObject(q[jAhead]);
+            prefetchObject<1>(G[jAhead]);
+        }
+        const vector C(0.5*Ae[e]*Ne[e]);
+        const gradientScalar Cx = C.x(), Cy = C.y(), Cz = C.z();
+        const scalar* __restrict__ qi = q[i].cdata();
+        const scalar* __restrict__ qj = q[j].cdata();
+        // (i != j and one end at least listed: the two never alias)
+        gradientScalar* __restrict__ Gi =
+            listed[i] ? G[i].data() : scratch.data();
+        gradientScalar* __restrict__ Gj =
+            listed[j] ? G[j].data() : scratch.data();
+        const direction n = nFluxComponents;
+        for (direction c = 0; c < n; ++c)
+        {
+            const gradientScalar f = qj[c] - qi[c];
+            const gradientScalar fx = f*Cx, fy = f*Cy, fz = f*Cz;
+            Gi[c] += fx;
+            Gi[n + c] += fy;
+            Gi[2*n + c] += fz;
+            Gj[c] += fx;
+            Gj[n + c] += fy;
+            Gj[2*n + c] += fz;
         }
     }
 

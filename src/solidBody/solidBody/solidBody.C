@@ -1621,8 +1621,36 @@ void Foam::solidBody::addInteriorFluxes
         const bool blend =
             edgePoints && energyStability_.valid() && scheme_->secondOrder();
         scalar S2 = 0, scale = 0;
-        for (const label e : *edges)
+        if (blend)
         {
+            levelPowerScale_.setSize(q_.size());
+            for (const label i : *edgePoints)
+            {
+                const fluxState& qi = q_[i];
+                levelPowerScale_[i] =
+                    mag(fluxVelocity(qi))*mag(fluxStress(qi));
+            }
+        }
+        const scalar* __restrict__ powerScale = levelPowerScale_.cdata();
+        const labelUList& levelEdges = *edges;
+        const label nLevelEdges = levelEdges.size();
+        for (label k = 0; k < nLevelEdges; ++k)
+        {
+            const label e = levelEdges[k];
+            // (as in the full pass below: the far end's data asked for
+            // ahead)
+            if (k + edgePrefetchDistance < nLevelEdges)
+            {
+                const label jAhead = ee[levelEdges[k + edgePrefetchDistance]];
+                if (scheme_->secondOrder())
+                {
+                    prefetchObject(G_[jAhead]);
+                }
+                prefetchObject(q_[jAhead]);
+                prefetchObject(H[jAhead]);
+                prefetchObject<1>(residual_.F[jAhead]);
+                prefetchObject<1>(residual_.momentum[jAhead]);
+            }
             if (scheme_->secondOrder())
             {
                 secondOrderFlux(e, tC, vCA, dS);
@@ -1635,14 +1663,7 @@ void Foam::solidBody::addInteriorFluxes
             if (blend)
             {
                 S2 += production(e, tC, vCA, dS);
-                const fluxState& qi = q_[es[e]];
-                const fluxState& qj = q_[ee[e]];
-                scale +=
-                    Ae[e]
-                   *(
-                        mag(fluxVelocity(qi))*mag(fluxStress(qi))
-                      + mag(fluxVelocity(qj))*mag(fluxStress(qj))
-                    );
+                scale += Ae[e]*(powerScale[es[e]] + powerScale[ee[e]]);
             }
         }
         // energyStable across the levels: this stage's edges enter the

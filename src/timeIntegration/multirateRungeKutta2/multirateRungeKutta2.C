@@ -115,10 +115,14 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
         L.sharedGradient1.setSize(nLevels_);
         L.levelWeight.setSize(nLevels_, 0.0);
         L.onLevel.setSize(nLevels_);
-        for (boolList& on : L.onLevel)
+        L.inGradient1.setSize(nLevels_);
+        for (label l = 0; l < nLevels_; ++l)
         {
-            on.setSize(n, false);
+            L.onLevel[l].setSize(n, false);
+            L.inGradient1[l].setSize(n, false);
         }
+        L.gradientEdges1.setSize(nLevels_);
+        L.gradientEdges2.setSize(nLevels_);
         L.listed.setSize(n, false);
         L.qStart.setSize(n);
         L.qPredicted.setSize(n);
@@ -358,9 +362,12 @@ void Foam::multirateRungeKutta2::levelLists
         L.points[l].clear();
         L.edges[l].clear();
         L.finerEdges[l].clear();
+        for (const label i : L.gradient1[l]) L.inGradient1[l][i] = false;
         L.gradient1[l].clear();
         L.coarser[l].clear();
         L.onLevel[l] = false;
+        L.gradientEdges1[l].clear();
+        L.gradientEdges2[l].clear();
     }
     L.finest = 0;
     L.levelWeight = 0;
@@ -443,10 +450,37 @@ void Foam::multirateRungeKutta2::levelLists
                 L.sharedGradient1[l].append(i);
             }
         }
-        for (const label i : L.gradient1[l]) mark[i] = false;
+        for (const label i : L.gradient1[l])
+        {
+            mark[i] = false;
+            L.inGradient1[l][i] = true;
+        }
         for (const label i : L.coarser[l]) mark[i] = false;
         L.edgePoints[l] = L.points[l];
         L.edgePoints[l].append(L.coarser[l]);
+    }
+
+    // The gradients' edges.  A point is listed for the first stage of its
+    // own level and of the next coarser one (a finer end) only, and
+    // neighbours differ by at most one level: an edge's candidates are
+    // the levels from one below its coarser end to its finer end
+    forAll(es, e)
+    {
+        const label i = es[e], j = ee[e];
+        const label li = level[i], lj = level[j];
+        const label fine = max(li, lj);
+        for (label l = max(min(li, lj) - 1, label(0)); l <= fine; ++l)
+        {
+            if (L.inGradient1[l][i] || L.inGradient1[l][j])
+            {
+                L.gradientEdges1[l].append(e);
+            }
+        }
+        L.gradientEdges2[li].append(e);
+        if (lj != li)
+        {
+            L.gradientEdges2[lj].append(e);
+        }
     }
 }
 
@@ -577,10 +611,12 @@ void Foam::multirateRungeKutta2::gradients
     solidBody& b,
     bodyLevels& L,
     const label l,
-    const DynamicList<label>& points,
+    const bool second,
     const DynamicList<label>& shared
 ) const
 {
+    const DynamicList<label>& points =
+        second ? L.points[l] : L.gradient1[l];
     if (!b.scheme_->secondOrder())
     {
         return;
@@ -597,6 +633,8 @@ void Foam::multirateRungeKutta2::gradients
         greenGaussGradient
         (
             b.dual_, b.q_, b.G_, points,
+            second ? L.gradientEdges2[l] : L.gradientEdges1[l],
+            second ? L.onLevel[l] : L.inGradient1[l],
             L.pointSubFaceStart, L.subFacePatch, L.subFace,
             riemann ? &b.residual_ : nullptr,
             b.material_->Zp(),
@@ -737,14 +775,14 @@ void Foam::multirateRungeKutta2::interiorStage
     const scalar halfh = 0.5*h;
     if (second)
     {
-        gradients(b, L, l, P, L.sharedOnLevel[l]);
+        gradients(b, L, l, true, L.sharedOnLevel[l]);
         ownEdgeFluxes(b, L, l, halfh);
         return;
     }
 
     stageResidual& R = b.residual_;
     const bool RJ = R.J.size();
-    gradients(b, L, l, L.gradient1[l], L.sharedGradient1[l]);
+    gradients(b, L, l, false, L.sharedGradient1[l]);
     ownEdgeFluxes(b, L, l, halfh);
 
     // The finer edges' fluxes at t: in the predictor, and out of the final

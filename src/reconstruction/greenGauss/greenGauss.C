@@ -346,7 +346,8 @@ void Foam::greenGaussGradient
     // The full pass's edge loop over the listed edges: each end that is
     // listed gains (q_j - q_i) C/2 (an edge between two listed points is
     // formed once for both).  An end that is not listed sums into a
-    // scratch gradient, which keeps the loop free of branches
+    // scratch gradient, which keeps the component loop free of branches;
+    // an edge with no listed end is skipped
     fluxStateGradient scratch;
     scratch = 0.0;
     const label nEdges = edges.size();
@@ -354,6 +355,10 @@ void Foam::greenGaussGradient
     {
         const label e = edges[k];
         const label i = es[e], j = ee[e];
+        if (!listed[i] && !listed[j])
+        {
+            continue;
+        }
         if (k + edgePrefetchDistance < nEdges)
         {
             const label jAhead = ee[edges[k + edgePrefetchDistance]];

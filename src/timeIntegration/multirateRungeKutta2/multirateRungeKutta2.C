@@ -121,8 +121,7 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
             L.onLevel[l].setSize(n, false);
             L.inGradient1[l].setSize(n, false);
         }
-        L.gradientEdges1.setSize(nLevels_);
-        L.gradientEdges2.setSize(nLevels_);
+        L.gradientEdges.setSize(nLevels_);
         L.listed.setSize(n, false);
         L.qStart.setSize(n);
         L.qPredicted.setSize(n);
@@ -366,8 +365,7 @@ void Foam::multirateRungeKutta2::levelLists
         L.gradient1[l].clear();
         L.coarser[l].clear();
         L.onLevel[l] = false;
-        L.gradientEdges1[l].clear();
-        L.gradientEdges2[l].clear();
+        L.gradientEdges[l].clear();
     }
     L.finest = 0;
     L.levelWeight = 0;
@@ -463,7 +461,8 @@ void Foam::multirateRungeKutta2::levelLists
     // The gradients' edges.  A point is listed for the first stage of its
     // own level and of the next coarser one (a finer end) only, and
     // neighbours differ by at most one level: an edge's candidates are
-    // the levels from one below its coarser end to its finer end
+    // the levels from one below its coarser end to its finer end.  (The
+    // second stage's points are among the first's: one list serves both)
     forAll(es, e)
     {
         const label i = es[e], j = ee[e];
@@ -473,13 +472,8 @@ void Foam::multirateRungeKutta2::levelLists
         {
             if (L.inGradient1[l][i] || L.inGradient1[l][j])
             {
-                L.gradientEdges1[l].append(e);
+                L.gradientEdges[l].append(e);
             }
-        }
-        L.gradientEdges2[li].append(e);
-        if (lj != li)
-        {
-            L.gradientEdges2[lj].append(e);
         }
     }
 }
@@ -633,7 +627,7 @@ void Foam::multirateRungeKutta2::gradients
         greenGaussGradient
         (
             b.dual_, b.q_, b.G_, points,
-            second ? L.gradientEdges2[l] : L.gradientEdges1[l],
+            L.gradientEdges[l],
             second ? L.onLevel[l] : L.inGradient1[l],
             L.pointSubFaceStart, L.subFacePatch, L.subFace,
             riemann ? &b.residual_ : nullptr,

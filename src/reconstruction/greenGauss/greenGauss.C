@@ -9,6 +9,36 @@
 namespace
 {
 
+// One edge's Green-Gauss terms: both ends gain (q_j - q_i) C/2, the
+// difference form of (q_i + q_j) C/2, equal to it because each dual cell is
+// closed (its edge and boundary areas sum to zero).  Its terms are of the
+// size of the gradient times the cell, not of the values'.  (Gi and Gj
+// never alias)
+inline void __attribute__((always_inline)) addEdgeGradient
+(
+    const Foam::scalar* __restrict__ qi,
+    const Foam::scalar* __restrict__ qj,
+    const Foam::vector& C,
+    Foam::gradientScalar* __restrict__ Gi,
+    Foam::gradientScalar* __restrict__ Gj
+)
+{
+    using namespace Foam;
+    const gradientScalar Cx = C.x(), Cy = C.y(), Cz = C.z();
+    const direction n = nFluxComponents;
+    for (direction c = 0; c < n; ++c)
+    {
+        const gradientScalar f = qj[c] - qi[c];
+        const gradientScalar fx = f*Cx, fy = f*Cy, fz = f*Cz;
+        Gi[c] += fx;
+        Gi[n + c] += fy;
+        Gi[2*n + c] += fz;
+        Gj[c] += fx;
+        Gj[n + c] += fy;
+        Gj[2*n + c] += fz;
+    }
+}
+
 // Sub-face s of a physical patch in the difference form (f_g - f_i) C_g,
 // f_g = f_i + w (f_prev + f_next - 2 f_i) (dualMesh.H)
 inline void addSubFaceGradient
@@ -247,29 +277,12 @@ void Foam::greenGaussGradient
             prefetchObject(q[jAhead]);
             prefetchObject<1>(G[jAhead]);
         }
-        const vector C(0.5*Ae[e]*Ne[e]);
-        const gradientScalar Cx = C.x(), Cy = C.y(), Cz = C.z();
-        const scalar* __restrict__ qi = q[i].cdata();
-        const scalar* __restrict__ qj = q[j].cdata();
         // (i != j: the two gradients never alias)
-        gradientScalar* __restrict__ Gi = G[i].data();
-        gradientScalar* __restrict__ Gj = G[j].data();
-        // Both ends gain (q_j - q_i) C/2: the difference form of
-        // (q_i + q_j) C/2, equal to it because each dual cell is closed
-        // (its edge and boundary areas sum to zero).  Its terms are of the
-        // size of the gradient times the cell, not of the values'
-        const direction n = nFluxComponents;
-        for (direction c = 0; c < n; ++c)
-        {
-            const gradientScalar f = qj[c] - qi[c];
-            const gradientScalar fx = f*Cx, fy = f*Cy, fz = f*Cz;
-            Gi[c] += fx;
-            Gi[n + c] += fy;
-            Gi[2*n + c] += fz;
-            Gj[c] += fx;
-            Gj[n + c] += fy;
-            Gj[2*n + c] += fz;
-        }
+        addEdgeGradient
+        (
+            q[i].cdata(), q[j].cdata(), 0.5*Ae[e]*Ne[e],
+            G[i].data(), G[j].data()
+        );
     }
 
     // Physical patches (coupled patches have no sub-faces), in the same
@@ -365,27 +378,13 @@ void Foam::greenGaussGradient
             prefetchObject(q[jAhead]);
             prefetchObject<1>(G[jAhead]);
         }
-        const vector C(0.5*Ae[e]*Ne[e]);
-        const gradientScalar Cx = C.x(), Cy = C.y(), Cz = C.z();
-        const scalar* __restrict__ qi = q[i].cdata();
-        const scalar* __restrict__ qj = q[j].cdata();
         // (i != j and one end at least listed: the two never alias)
-        gradientScalar* __restrict__ Gi =
-            listed[i] ? G[i].data() : scratch.data();
-        gradientScalar* __restrict__ Gj =
-            listed[j] ? G[j].data() : scratch.data();
-        const direction n = nFluxComponents;
-        for (direction c = 0; c < n; ++c)
-        {
-            const gradientScalar f = qj[c] - qi[c];
-            const gradientScalar fx = f*Cx, fy = f*Cy, fz = f*Cz;
-            Gi[c] += fx;
-            Gi[n + c] += fy;
-            Gi[2*n + c] += fz;
-            Gj[c] += fx;
-            Gj[n + c] += fy;
-            Gj[2*n + c] += fz;
-        }
+        addEdgeGradient
+        (
+            q[i].cdata(), q[j].cdata(), 0.5*Ae[e]*Ne[e],
+            listed[i] ? G[i].data() : scratch.data(),
+            listed[j] ? G[j].data() : scratch.data()
+        );
     }
 
     for (const label i : points)

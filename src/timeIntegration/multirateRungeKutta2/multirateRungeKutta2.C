@@ -452,6 +452,15 @@ void Foam::multirateRungeKutta2::levelLists
         {
             mark[i] = false;
             L.inGradient1[l][i] = true;
+            // (the gradients' edge lists below rely on it)
+            if (level[i] != l && level[i] != l + 1)
+            {
+                FatalErrorInFunction
+                    << "Point " << i << " on level " << level[i]
+                    << " is in the gradient list of level " << l
+                    << ": neighbours more than one level apart"
+                    << abort(FatalError);
+            }
         }
         for (const label i : L.coarser[l]) mark[i] = false;
         L.edgePoints[l] = L.points[l];

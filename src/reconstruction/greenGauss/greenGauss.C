@@ -449,4 +449,43 @@ void Foam::greenGaussGradient
 }
 
 
+void Foam::pointSubFaceRows
+(
+    const dualMesh& dual,
+    labelList& pointSubFaceStart,
+    labelList& subFacePatch,
+    labelList& subFace
+)
+{
+    const label n = dual.volumes().size();
+    const label nPatches = dual.mesh().boundaryMesh().size();
+    pointSubFaceStart.setSize(n + 1);
+    pointSubFaceStart = 0;
+    for (label patchi = 0; patchi < nPatches; ++patchi)
+    {
+        for (const label i : dual.subFaces(patchi).point)
+        {
+            ++pointSubFaceStart[i + 1];
+        }
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        pointSubFaceStart[i + 1] += pointSubFaceStart[i];
+    }
+    subFacePatch.setSize(pointSubFaceStart[n]);
+    subFace.setSize(pointSubFaceStart[n]);
+    labelList next(SubList<label>(pointSubFaceStart, n));
+    for (label patchi = 0; patchi < nPatches; ++patchi)
+    {
+        const labelList& point = dual.subFaces(patchi).point;
+        forAll(point, s)
+        {
+            const label m = next[point[s]]++;
+            subFacePatch[m] = patchi;
+            subFace[m] = s;
+        }
+    }
+}
+
+
 // ************************************************************************* //

@@ -141,32 +141,7 @@ Foam::multirateRungeKutta2::multirateRungeKutta2
             }
             L.sharedPoints.transfer(shared);
         }
-        const label nPatches = dual.mesh().boundaryMesh().size();
-        L.pointSubFaceStart.setSize(n + 1, 0);
-        for (label patchi = 0; patchi < nPatches; ++patchi)
-        {
-            for (const label i : dual.subFaces(patchi).point)
-            {
-                ++L.pointSubFaceStart[i + 1];
-            }
-        }
-        for (label i = 0; i < n; ++i)
-        {
-            L.pointSubFaceStart[i + 1] += L.pointSubFaceStart[i];
-        }
-        L.subFacePatch.setSize(L.pointSubFaceStart[n]);
-        L.subFace.setSize(L.pointSubFaceStart[n]);
-        labelList next(SubList<label>(L.pointSubFaceStart, n));
-        for (label patchi = 0; patchi < nPatches; ++patchi)
-        {
-            const labelList& point = dual.subFaces(patchi).point;
-            forAll(point, s)
-            {
-                const label m = next[point[s]]++;
-                L.subFacePatch[m] = patchi;
-                L.subFace[m] = s;
-            }
-        }
+        pointSubFaceRows(dual, L.pointSubFaceStart, L.subFacePatch, L.subFace);
         L.stagePower.setSize(nLevels_, 0.0);
         L.Am.setSize(n, Zero);
         L.AF.setSize(n, Zero);

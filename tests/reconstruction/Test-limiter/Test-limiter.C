@@ -591,33 +591,10 @@ int main(int argc, char *argv[])
                 edges.append(e);
             }
         }
-        // Each point's boundary sub-faces, as multirateRungeKutta2 keeps
-        // them
-        const label nPatches = mesh.boundaryMesh().size();
-        labelList start(nPts + 1, 0);
-        for (label patchi = 0; patchi < nPatches; ++patchi)
-        {
-            for (const label i : dual.subFaces(patchi).point)
-            {
-                ++start[i + 1];
-            }
-        }
-        for (label i = 0; i < nPts; ++i)
-        {
-            start[i + 1] += start[i];
-        }
-        labelList subFacePatch(start[nPts]), subFace(start[nPts]);
-        labelList next(SubList<label>(start, nPts));
-        for (label patchi = 0; patchi < nPatches; ++patchi)
-        {
-            const labelList& point = dual.subFaces(patchi).point;
-            forAll(point, s)
-            {
-                const label m = next[point[s]]++;
-                subFacePatch[m] = patchi;
-                subFace[m] = s;
-            }
-        }
+        // Each point's boundary sub-faces (the rows multirateRungeKutta2
+        // keeps)
+        labelList start, subFacePatch, subFace;
+        pointSubFaceRows(dual, start, subFacePatch, subFace);
 
         // (the edges with a listed end, and all edges: those without one
         // are skipped)

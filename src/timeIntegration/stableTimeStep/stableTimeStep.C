@@ -406,7 +406,11 @@ Foam::scalar Foam::stableTimeStep::deltaT
             stretch2_[i] = max(stretch2_[i], hN2);
             if (JRate && bDrainsJ_.test(b))
             {
-                sJ_[i] += boundaryJWeight*bMagA_[b]*hN2;
+                // (the boundary's Riemann velocity divides by the face's
+                // impedance too: solidBoundaryCondition::solveState)
+                sJ_[i] +=
+                    boundaryJWeight*bMagA_[b]*hN2
+                   /acousticFormulas::compressedFaceFactor(std::sqrt(hN2));
             }
         }
         if (Pstream::parRun())

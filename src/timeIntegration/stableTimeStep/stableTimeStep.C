@@ -60,6 +60,15 @@ const Foam::scalar boundaryJWeight = 0.5*(Foam::sqrt(5.0) - 1);
 // estimate r_i, 0.949/0.5
 const Foam::scalar heldMargin = 1.9;
 
+// A face's J drain, area times |H N|^2/max(1, |H N|) (from its area ratio
+// squared): the flux divides by the face's impedance Z max(1, |H N|),
+// interior faces and boundary sub-faces alike
+inline Foam::scalar JDrain(const Foam::scalar area, const Foam::scalar hN2)
+{
+    return
+        area*hN2/Foam::acousticFormulas::compressedFaceFactor(std::sqrt(hN2));
+}
+
 } // End anonymous namespace
 
 
@@ -392,9 +401,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
             stretch2_[j] = max(stretch2_[j], max(magSqr(hNj), hN2));
             if (JRate)
             {
-                const scalar w =
-                    magSf[e]*hN2
-                   /acousticFormulas::compressedFaceFactor(std::sqrt(hN2));
+                const scalar w = JDrain(magSf[e], hN2);
                 sJ_[i] += w;
                 sJ_[j] += w;
             }
@@ -408,9 +415,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
             {
                 // (the boundary's Riemann velocity divides by the face's
                 // impedance too: solidBoundaryCondition::solveState)
-                sJ_[i] +=
-                    boundaryJWeight*bMagA_[b]*hN2
-                   /acousticFormulas::compressedFaceFactor(std::sqrt(hN2));
+                sJ_[i] += JDrain(boundaryJWeight*bMagA_[b], hN2);
             }
         }
         if (Pstream::parRun())

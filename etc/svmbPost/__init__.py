@@ -5,6 +5,7 @@ tests; put $SVMB_PROJECT/etc on PYTHONPATH, as etc/bashrc does):
     svmbPost.barImpact   results/ of the bar-impact tutorials (exact solution)
     svmbPost.barWall     results/ of a bar on a rigid wall (exact solution)
     svmbPost.stepField   what sets the time step (the stableDeltaT field)
+    svmbPost.solverLog   a log's closing figures, for benchmarks/*/Allrun
 Case-specific figures live with the case (tutorials/taylorBar/taylorBarPost.py).
 
 Helpers:
@@ -12,7 +13,9 @@ reading OpenFOAM point fields, mesh points and faces (ASCII or binary,
 compressed or not), the solver's CSV monitors, and the figures it writes
 with every complete time directory (<time>/uniform/runStatistics,
 contactState.<pair>).  Figures come from these files, never from the
-wording of the log.
+wording of the log; the one exception is svmbPost.solverLog, which the
+benchmark scripts use for what only the log's closing lines print (the
+multirate updates and work, the time loop's own wall time).
 """
 import gzip
 import os

@@ -673,12 +673,18 @@ void Foam::solidBody::writeOnsetStarts(dictionary& state) const
     }
     writeStartTimes(state, "onset", onsetStart_, keep);
 
-    // The points still in their release
+    // The points still in their release (all that have one, when no stage
+    // has set the durations since a restart)
     const scalar t = runTime_.value();
+    const scalar share = releaseShare();
+    const bool durations = onsetDuration_.size() == releaseStart_.size();
     keep.setSize(releaseStart_.size());
     forAll(releaseStart_, b)
     {
-        keep[b] = t - releaseStart_[b] < releaseDuration(b);
+        keep[b] =
+            durations
+          ? t - releaseStart_[b] < share*onsetDuration_[b]
+          : releaseStart_[b] > -VGREAT;
     }
     writeStartTimes(state, "release", releaseStart_, keep);
 }
@@ -817,16 +823,15 @@ void Foam::solidBody::readOnsetStarts(const dictionary& state)
 }
 
 
-Foam::scalar Foam::solidBody::releaseDuration(const label b) const
+Foam::scalar Foam::solidBody::bodyOnsetTransits() const
 {
-    // (onsetDuration_ holds the onset's transits of the point's edge)
-    if (b >= onsetDuration_.size())
-    {
-        return 0;
-    }
-    return
-        onsetDuration_[b]*releaseTransits
-       /(material_->plastic() ? plasticOnsetTransits : onsetTransits);
+    return material_->plastic() ? plasticOnsetTransits : onsetTransits;
+}
+
+
+Foam::scalar Foam::solidBody::releaseShare() const
+{
+    return releaseTransits/bodyOnsetTransits();
 }
 
 
@@ -863,9 +868,7 @@ bool Foam::solidBody::updateOnsetZone()
         {
             onsetDuration_[b] = h[bp[b]];
         }
-        const scalar transits =
-            (material_->plastic() ? plasticOnsetTransits : onsetTransits)
-           /material_->cp();
+        const scalar transits = bodyOnsetTransits()/material_->cp();
         for (scalar& d : onsetDuration_)
         {
             d *= transits;
@@ -897,6 +900,7 @@ bool Foam::solidBody::updateOnsetZone()
     List<bool>& core = onsetZonePoint_;
     core = false;
     bool anyCore = false;
+    const scalar share = releaseShare();
     forAll(bp, b)
     {
         const label i = bp[b];
@@ -907,7 +911,7 @@ bool Foam::solidBody::updateOnsetZone()
                 releaseStart_[b] = t;
             }
             onsetStart_[b] = VGREAT;
-            core[i] = (t - releaseStart_[b] < releaseDuration(b));
+            core[i] = (t - releaseStart_[b] < share*onsetDuration_[b]);
             anyCore = anyCore || core[i];
             continue;
         }

@@ -337,7 +337,6 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
 {
     heldLimit_ = false;
     releaseCentralF_ = false;
-    releaseZone_ = false;
 
     // The dual mesh holds all the solver needs: free OpenFOAM's
     // demand-driven geometry and addressing, and the point lists of the
@@ -931,42 +930,28 @@ bool Foam::solidBody::updateOnsetZone()
         core[i] = (t - onsetStart_[b] < onsetDuration_[b]);
         anyCore = anyCore || core[i];
     }
-    // The release zone of the upwind F flux's bodies: the released
-    // points' own edges (addInteriorFluxes)
-    if (releaseCentralF_)
+    // The upwind F flux's bodies (releaseCentralF_): their zone is the
+    // released points alone, their F flux being upwind everywhere else
+    // (addInteriorFluxes drops its traction-jump term on the zone's
+    // opening edges).  The loaded flags are synchronised and so are the
+    // start times, so processors agree on the points without an exchange
+    if (scheme_->FStabilisation())
     {
-        releaseZone_ = false;
-        List<bool>& released = releasedPoint_;
-        released.setSize(nPts);
-        released = false;
+        bool anyReleased = false;
         forAll(bp, b)
         {
             const label i = bp[b];
-            released[i] = core[i] && !loaded[i];
-            releaseZone_ = releaseZone_ || released[i];
+            core[i] = core[i] && !loaded[i];
+            anyReleased = anyReleased || core[i];
         }
-        reduce(releaseZone_, orOp<bool>());
-        if (releaseZone_)
+        if (anyReleased)
         {
-            if (Pstream::parRun())
-            {
-                syncTools::syncPointList
-                (
-                    mesh_, released, orEqOp<bool>(), false
-                );
-            }
-            releaseZoneEdge_.setSize(es.size());
             forAll(es, e)
             {
-                releaseZoneEdge_[e] = released[es[e]] || released[ee[e]];
+                onsetZoneEdge_[e] = core[es[e]] || core[ee[e]];
             }
         }
-    }
-    // (the upwind F flux's bodies need no onset zone: their F flux is
-    // upwind everywhere)
-    if (!scheme_->onsetStabilisation())
-    {
-        return false;
+        return anyReleased;
     }
     if (!returnReduce(anyCore, orOp<bool>()))
     {
@@ -1353,15 +1338,10 @@ void Foam::solidBody::addInteriorFluxes
      && updateOnsetZone();
     const bool* __restrict__ zoneEdge =
         onsetZone ? onsetZoneEdge_.cdata() : nullptr;
-    // The released points' edges (the upwind F flux's release zone:
-    // updateOnsetZone)
-    if (releaseCentralF_ && !edges)
-    {
-        updateOnsetZone();
-    }
+    // The upwind F flux's release zone: the released points' edges
+    const bool releaseZone = releaseCentralF_ && !edges && updateOnsetZone();
     const bool* __restrict__ releaseEdge =
-        releaseCentralF_ && !edges && releaseZone_
-      ? releaseZoneEdge_.cdata() : nullptr;
+        releaseZone ? onsetZoneEdge_.cdata() : nullptr;
     const bool upwindF = scheme_->FStabilisation() || onsetZone;
     const bool JStabilisation = scheme_->JLaw() && !scheme_->FStabilisation();
     const scalar Sfactor = 0.5/material_->Zp();

@@ -1581,7 +1581,11 @@ Foam::scalar Foam::contactPair::impactMach
 }
 
 
-bool Foam::contactPair::planeWaveImpact(const solidBody& b) const
+bool Foam::contactPair::planeWaveImpact
+(
+    const solidBody& b,
+    const bool uniaxial
+) const
 {
     if (impactMach(b, true) <= 0)
     {
@@ -1594,7 +1598,7 @@ bool Foam::contactPair::planeWaveImpact(const solidBody& b) const
     const vector dv(b.initialVelocity() - other.initialVelocity());
     const vector A(b.dual().patchArea(s.patchi));
     const scalar closing = (dv & A)/max(mag(A), VSMALL);
-    return closing >= 0.5*mag(dv) && b.planeWaveImpact(s.patchi);
+    return closing >= 0.5*mag(dv) && b.planeWaveImpact(s.patchi, uniaxial);
 }
 
 

@@ -16,6 +16,7 @@
 #include "interiorHugoniot.H"
 #include "greenGauss.H"
 #include "vector2D.H"
+#include "unitConversion.H"
 #include "IFstream.H"
 #include "IStringStream.H"
 #include "ListListOps.H"
@@ -489,15 +490,45 @@ bool Foam::solidBody::driven() const
 const Foam::scalar Foam::solidBody::planeWaveSpanTolerance = 0.1;
 
 
-bool Foam::solidBody::planeWaveImpact(const label patchi) const
+bool Foam::solidBody::planeWaveImpact
+(
+    const label patchi,
+    const bool uniaxial
+) const
 {
     return
         dual_.patchFlat(patchi, planarImpactAngle)
-     && mag(dual_.patchSpan(patchi) - 1) <= planeWaveSpanTolerance;
+     && mag(dual_.patchSpan(patchi) - 1) <= planeWaveSpanTolerance
+     && (!uniaxial || laterallyConfined(patchi));
 }
 
 
-bool Foam::solidBody::planeWaveBoundaryImpact() const
+bool Foam::solidBody::laterallyConfined(const label patchi) const
+{
+    const vector A(dual_.patchArea(patchi));
+    const vector n(A/max(mag(A), VSMALL));
+    const scalar parallel = Foam::cos(degToRad(planarImpactAngle));
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        const label p = bc.patchi();
+        if (p == patchi || bc.type() == "symmetry")
+        {
+            continue;
+        }
+        const vector Ap(dual_.patchArea(p));
+        const bool parallelFace =
+            dual_.patchFlat(p, planarImpactAngle)
+         && mag(Ap & n) >= parallel*mag(Ap);
+        if (!parallelFace)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+bool Foam::solidBody::planeWaveBoundaryImpact(const bool uniaxial) const
 {
     // (a velocity or traction step on a bar's end face sends the same
     // plane front as a wall: without the upwind F flux the face overshoots
@@ -507,7 +538,7 @@ bool Foam::solidBody::planeWaveBoundaryImpact() const
         if
         (
             (bc.closingSpeed(initialVelocity_) > 0 || bc.drives())
-         && planeWaveImpact(bc.patchi())
+         && planeWaveImpact(bc.patchi(), uniaxial)
         )
         {
             return true;
@@ -522,6 +553,7 @@ void Foam::solidBody::chooseFromScene
     const scalar planarMach,
     const scalar impactMach,
     const bool planeWave,
+    const bool uniaxial,
     const bool multirate
 )
 {
@@ -532,7 +564,8 @@ void Foam::solidBody::chooseFromScene
     }
     scheme_->chooseFromScene
     (
-        planarMach, impactMach, planeWave, contactPatches, multirate
+        planarMach, impactMach, planeWave, uniaxial, contactPatches,
+        multirate
     );
     if (scheme_->secondOrder() && limiter_->type() != scheme_->limiter())
     {

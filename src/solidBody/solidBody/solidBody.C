@@ -511,7 +511,8 @@ bool Foam::solidBody::laterallyConfined(const label patchi) const
     for (const solidBoundaryCondition& bc : bcs_)
     {
         const label p = bc.patchi();
-        if (p == patchi || bc.type() == "symmetry")
+        // (a symmetry plane holds its points on their plane)
+        if (p == patchi || bc.constrainsNormal())
         {
             continue;
         }

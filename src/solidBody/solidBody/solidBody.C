@@ -576,6 +576,16 @@ void Foam::solidBody::chooseFromScene
     {
         onsetLimiter_.reset(new limiters::barthJespersen(scheme_->dict()));
     }
+    if
+    (
+        material_->plastic() && scheme_->secondOrder()
+     && scheme_->elasticLimiter() != scheme_->limiter()
+    )
+    {
+        elasticLimiter_ =
+            limiter::New(scheme_->elasticLimiter(), scheme_->dict());
+        updateElasticPoints();
+    }
     // With the central F flux the points closed on a wall or contact face
     // (or driven) have a mode of their own, which sets their step
     // (stableTimeStep.H)
@@ -1713,7 +1723,11 @@ void Foam::solidBody::addInteriorFluxes
     };
 
     // The edge's second-order fluxes (from its reconstructed midpoint
-    // states) and its first-order ones (from its points' states)
+    // states) and its first-order ones (from its points' states).  A
+    // plastic body's edges with a point that has not yielded may take a
+    // limiter of their own (bodyScheme elasticLimiter)
+    const bool* __restrict__ elasticPoint =
+        elasticLimiter_ ? elasticPoint_.cdata() : nullptr;
     fluxState qL, qR;
     auto secondOrderFlux =
     [&]
@@ -1723,7 +1737,13 @@ void Foam::solidBody::addInteriorFluxes
     {
         const label i = es[e], j = ee[e];
         const vector halfdX(0.5*(X[j] - X[i]));
-        limiter_->midpointStates(q_[i], q_[j], G_[i], G_[j], halfdX, qL, qR);
+        const limiter& edgeLimiter =
+            elasticPoint && (elasticPoint[i] || elasticPoint[j])
+          ? elasticLimiter_() : limiter_();
+        edgeLimiter.midpointStates
+        (
+            q_[i], q_[j], G_[i], G_[j], halfdX, qL, qR
+        );
         edgeFlux
         (
             e,
@@ -2254,12 +2274,42 @@ void Foam::solidBody::applyConstraints(const UList<bool>* active)
 }
 
 
+void Foam::solidBody::updateElasticPoints(const labelUList* points)
+{
+    if (!elasticLimiter_)
+    {
+        return;
+    }
+    const scalarList& epsP = material_->epsP();
+    if (elasticPoint_.size() != epsP.size())
+    {
+        elasticPoint_.setSize(epsP.size());
+        points = nullptr;
+    }
+    if (points)
+    {
+        for (const label i : *points)
+        {
+            elasticPoint_[i] = (epsP[i] <= 0);
+        }
+    }
+    else
+    {
+        forAll(epsP, i)
+        {
+            elasticPoint_[i] = (epsP[i] <= 0);
+        }
+    }
+}
+
+
 void Foam::solidBody::endStep(const labelUList* points)
 {
     if (material_->plastic())
     {
         stateChanged();
         material_->updateState(F_, Jc(), dDplastic_, points);
+        updateElasticPoints(points);
         if (points)
         {
             // (multirate stepping: one level's points, a point shared by

@@ -396,20 +396,25 @@ Foam::bodyScheme::bodyScheme
     );
 
     // The edges of a plastic body's points that have not yielded: an
-    // unlimited body limits them with van Albada.  Where the material
-    // yields the stress-strain curve has a kink (the tangent modulus drops
-    // from K + 4/3 mu to about K), and across a kink a sharp, unlimited
-    // (or Barth-Jespersen, monotonized central) reconstruction converges
-    // to a pair of waves that the material does not admit: a copper bar
-    // on a wall at 100 m/s (tests/solidBody/plasticWaves) carried its
-    // elastic precursor 10-14 % below the yield point on 200-800 cells,
-    // where van Albada or first order give the yield point itself, and
-    // the unlimited precursor front rang ahead with a tension of 21-41 %
-    // of its amplitude (40-200 m/s, not shrinking with the mesh).  Behind
-    // the plastic wave (yielded points) the reconstruction stays
-    // unlimited: the shocked state within 0.05-0.5 % instead of van
-    // Albada's standing pattern of 1.2-2.3 % (doc/results.md, "Elastic
-    // precursors of plastic waves")
+    // unlimited body limits them.  Where the material yields the
+    // stress-strain curve has a kink (the tangent modulus drops from
+    // K + 4/3 mu to about K), and across a kink a sharp, unlimited (or
+    // Barth-Jespersen, monotonized central) reconstruction converges to a
+    // pair of waves that the material does not admit: a copper bar on a
+    // wall at 100 m/s (tests/solidBody/plasticWaves) carried its elastic
+    // precursor 10-14 % below the yield point on 200-800 cells, where van
+    // Albada or first order give the yield point itself, and the unlimited
+    // precursor front rang ahead with a tension of 21-41 % of its amplitude
+    // (40-200 m/s, not shrinking with the mesh).  So the edges that cross
+    // the kink take van Albada (a point near its yield stress,
+    // solidBody::nearYieldShare, or a yielded point at one end and one
+    // that has not at the other), those of the other points that have not
+    // yielded monotonized central (it stops the ringing too, and damps the
+    // elastic waves of the unyielded parts less: the plastic torus 9.40 %
+    // of E0 against 9.56 % with van Albada on them all).  Behind the plastic wave (yielded
+    // points) the reconstruction stays unlimited: the shocked state within
+    // 0.05-0.5 % instead of van Albada's standing pattern of 1.2-2.3 %
+    // (doc/results.md, "Elastic precursors of plastic waves")
     if (plastic)
     {
         const bool unlimited = secondOrder_ && limiter_ == "none";
@@ -420,11 +425,13 @@ Foam::bodyScheme::bodyScheme
                 "vanAlbada", "monotonizedCentral", "superbee",
                 "simpleWaveSuperbee", "none"
             },
-            unlimited ? "vanAlbada" : limiter_,
+            unlimited ? "monotonizedCentral" : limiter_,
             unlimited
           ? string("plastic without a limiter: the edges of points that have"
-            " not yielded take van Albada (the elastic precursor at the"
-            " yield point, without ringing ahead of it)")
+            " not yielded take monotonized central (no ringing ahead of"
+            " elastic fronts), van Albada where such a point is near its"
+            " yield stress (the elastic precursor of a plastic wave at the"
+            " yield point)")
           : string("the body's limiter on every edge")
         );
     }

@@ -435,19 +435,15 @@ Foam::bodyScheme::bodyScheme
           : string("the body's limiter on every edge")
         );
     }
-    else
+    else if (!automatic("elasticLimiter"))
     {
-        if (!automatic("elasticLimiter"))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "elasticLimiter in " << dict_.name()
-                << " applies to plastic materials only (the limiter of the"
-                << " edges of points that have not yielded); the material"
-                << " is not plastic." << nl
-                << "    Valid: remove it, or set 'limiter' for the whole"
-                << " body" << exit(FatalIOError);
-        }
-        elasticLimiter_ = limiter_;
+        FatalIOErrorInFunction(dict_)
+            << "elasticLimiter in " << dict_.name()
+            << " applies to plastic materials only (the limiter of the"
+            << " edges of points that have not yielded); the material"
+            << " is not plastic." << nl
+            << "    Valid: remove it, or set 'limiter' for the whole"
+            << " body" << exit(FatalIOError);
     }
 
     // A shear-free body's stress is a pressure times H.  With H N at the

@@ -1748,15 +1748,23 @@ void Foam::solidBody::addInteriorFluxes
     {
         const label i = es[e], j = ee[e];
         const vector halfdX(0.5*(X[j] - X[i]));
-        // (an edge between a yielded point and one that has not yielded
-        // crosses the yield point's kink however steep the front)
-        const char si = elasticPoint ? elasticPoint[i] : 0;
-        const char sj = elasticPoint ? elasticPoint[j] : 0;
-        const limiter& edgeLimiter =
-            si == 2 || sj == 2 || (si == 0) != (sj == 0) ? yieldLimiter_()
-          : si == 1 ? elasticLimiter_()
-          : limiter_();
-        edgeLimiter.midpointStates
+        const limiter* edgeLimiter = limiter_.get();
+        if (elasticPoint)
+        {
+            // (an edge between a yielded point and one that has not
+            // yielded crosses the yield point's kink however steep the
+            // front)
+            const char si = elasticPoint[i], sj = elasticPoint[j];
+            if (si == 2 || sj == 2 || (si == 0) != (sj == 0))
+            {
+                edgeLimiter = yieldLimiter_.get();
+            }
+            else if (si == 1)
+            {
+                edgeLimiter = elasticLimiter_.get();
+            }
+        }
+        edgeLimiter->midpointStates
         (
             q_[i], q_[j], G_[i], G_[j], halfdX, qL, qR
         );

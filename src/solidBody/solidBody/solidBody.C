@@ -2553,6 +2553,18 @@ void Foam::solidBody::write()
 {
     checkReleasedFaces();
 
+    // A plastic point's stress is that of the state its return map started
+    // from, and endStep() commits the returned state without evaluating it
+    // again (it equals the committed state's to the return map's series
+    // truncation, about 1e-10).  A restart can only evaluate the committed
+    // state, so this run does the same at each write, and a run restarted
+    // from the write continues exactly as this one does
+    if (material_->plastic())
+    {
+        updateConstitutive();
+        updateElasticPoints();
+    }
+
     // The state's lists are lent to the fields for the write (no copies:
     // the write would otherwise set the run's peak memory), v, sigma and p
     // computed into theirs, in the room of the residuals (which are not in

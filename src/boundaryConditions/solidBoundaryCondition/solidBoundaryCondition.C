@@ -7,6 +7,7 @@
 #include "acousticFormulas.H"
 #include "checkedInput.H"
 #include "UIndirectList.H"
+#include "materialModel.H"
 
 namespace Foam
 {
@@ -174,7 +175,15 @@ Foam::scalar Foam::solidBoundaryCondition::solveState
     // dissipation fall from cfl 0.65-0.75 on (doc/results.md, "Compressed
     // boundary faces")
     const scalar s = acousticFormulas::compressedFaceFactor(Lambda);
-    const waveData w{s*body.Zp, s*body.Zs, body.shockMass*Lambda};
+    // (a Hugoniot material's Zp at the point's compression)
+    const scalar Zp =
+        body.J
+      ? body.material->rho()*body.material->tangentWaveSpeed((*body.J)[i])
+      : body.Zp;
+    const waveData w
+    {
+        s*Zp, s*body.Zs, body.shockMass*Lambda, nullptr, nullptr
+    };
     const point& X = dual_.mesh().points()[i];
     stateP_[k] = contactState
     (

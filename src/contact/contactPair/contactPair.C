@@ -1212,6 +1212,18 @@ bool Foam::contactPair::pairState
         tB & n, vB & n, mB.rho(), mB.cp(), b.Lambda,
         mB.hugoniot() ? mB.hugoniotS() : 0, b.SigmaJ
     };
+    // A Hugoniot material's wave speed at the point's compression (the
+    // shock relation's c + s dv holds from the undeformed state; a
+    // compressed face's small jumps travel faster: interiorRiemannSolvers::
+    // hugoniot::normalImpedance)
+    if (mA.hugoniot())
+    {
+        L.c = mA.tangentWaveSpeedAtSigmaJ(a.SigmaJ);
+    }
+    if (mB.hugoniot())
+    {
+        R.c = mB.tangentWaveSpeedAtSigmaJ(b.SigmaJ);
+    }
     scalar vnC, tnC;
     riemann_->normalState(L, R, vnC, tnC);
 

@@ -1274,10 +1274,11 @@ struct solverTraction
     (
         const Foam::vector& tL, const Foam::vector& tR,
         const Foam::vector& vL, const Foam::vector& vR,
-        const Foam::vector& n, const Foam::scalar Lambda
+        const Foam::vector& n, const Foam::scalar Lambda,
+        const Foam::scalar Zstate
     ) const
     {
-        return solver.traction(tL, tR, vL, vR, n, Lambda);
+        return solver.traction(tL, tR, vL, vR, n, Lambda, Zstate);
     }
 
     //- (not used: compressiveJumps is false)
@@ -1291,7 +1292,7 @@ struct solverTraction
         const Foam::scalar
     ) const
     {
-        return solver.traction(tL, tR, vL, vR, n, Lambda);
+        return solver.traction(tL, tR, vL, vR, n, Lambda, 0);
     }
 };
 
@@ -1307,7 +1308,8 @@ struct stickTraction
     (
         const Foam::vector& tL, const Foam::vector& tR,
         const Foam::vector& vL, const Foam::vector& vR,
-        const Foam::vector& n, const Foam::scalar Lambda
+        const Foam::vector& n, const Foam::scalar Lambda,
+        const Foam::scalar
     ) const
     {
         return Foam::acousticFormulas::interiorStickTraction
@@ -1416,6 +1418,14 @@ void Foam::solidBody::addInteriorFluxes
     const scalar ZpBody = material_->Zp();
     const scalar shockMass = upwindF || shockF ? material_->shockMass() : 0;
     const bool shearFree = material_->shearFree();
+    // A Hugoniot material's normal impedance at an edge: at least that of
+    // the chord of its pressure between the points' volume ratios, which
+    // grows with compression (interiorRiemannSolvers::hugoniot::
+    // normalImpedance); other materials' wave speeds do not depend on
+    // the state here
+    const materialModel& material = material_();
+    const bool stateImpedance = material.hugoniot();
+    const List<scalar>& Jstate = Jc();
     // With the upwind F flux, the edges whose points close (a compressive
     // front) take their jumps' own impedances, in the traction and in the
     // F flux (acousticFormulas::jumpTractionFactor): an oblique
@@ -1482,6 +1492,10 @@ void Foam::solidBody::addInteriorFluxes
         const vector& N = Ne[e];
         const scalar A = Ae[e];
         const bool upwindE = upwindF && (!zoneEdge || zoneEdge[e]);
+        const scalar Zstate =
+            stateImpedance
+          ? material.rho()*material.chordWaveSpeed(Jstate[i], Jstate[j])
+          : ZpBody;
 
         // Spatial normal from the average area map
         const vector hN(0.5*((H[i] & N) + (H[j] & N)));
@@ -1571,7 +1585,7 @@ void Foam::solidBody::addInteriorFluxes
             (
                 tL, tR,
                 vi + ((vL - vi) & n)*n, vj + ((vR - vj) & n)*n,
-                n, magHN
+                n, magHN, Zstate
             );
             const vector vP(0.5*(vi + vj));
             vAverage = vP + ((vAverage - vP) & n)*n;
@@ -1596,7 +1610,7 @@ void Foam::solidBody::addInteriorFluxes
         }
         else
         {
-            tC = A*traction(tL, tR, vL, vR, n, magHN);
+            tC = A*traction(tL, tR, vL, vR, n, magHN, Zstate);
         }
 
         // The upwind (Riemann) velocity: average plus the traction jump
@@ -1636,7 +1650,7 @@ void Foam::solidBody::addInteriorFluxes
             shockMass > 0
           ? 0.5/interiorRiemannSolvers::hugoniot::normalImpedance
             (
-                ZpBody, shockMass, vL, vR, n, magHN
+                ZpBody, shockMass, vL, vR, n, magHN, Zstate
             )
           : invS*vStabP;
         scalar vStabT = invS*vStabS;
@@ -2030,7 +2044,7 @@ void Foam::solidBody::addBoundaryFluxes
     const materialModel& m = material_();
     const solidBoundaryCondition::waveData body
     {
-        m.Zp(), m.Zs(), m.shockMass()
+        m.Zp(), m.Zs(), m.shockMass(), m.hugoniot() ? &Jc() : nullptr, &m
     };
     for (const solidBoundaryCondition& bc : bcs_)
     {

@@ -259,6 +259,31 @@ int main(int argc, char *argv[])
             const scalar pH = m.rho()*sqr(m.cp())*(J - 1)/sqr(1 - s*(1 - J));
             const scalar err = mag(stressOf(m, F).xx() - pH)/mag(pH);
             check(err < 1e-13, "Hugoniot P_xx = p_H(J) in compression", err, 1e-13);
+
+            // Wave speeds in compressed material: the chord from the
+            // undeformed state to J is the shock's, U = c + s v with
+            // v = U (1 - J), i.e. U = c/(1 - s (1 - J)); the tangent one
+            // is c sqrt((1 + s x)/(1 - s x)^3), x = 1 - J; and the chord
+            // between two equal states is the tangent
+            const scalar c = m.cp(), x = 1 - J;
+            const scalar U = c/(1 - s*x);
+            scalar e = mag(m.chordWaveSpeed(1, J) - U)/U;
+            check(e < 1e-13, "chord wave speed from J = 1: the shock speed", e, 1e-13);
+            e = mag(m.chordWaveSpeed(J, 1) - U)/U;
+            check(e < 1e-13, "chord wave speed, symmetric", e, 1e-13);
+            const scalar cT = c*std::sqrt((1 + s*x)/pow3(1 - s*x));
+            e = mag(m.tangentWaveSpeed(J) - cT)/cT;
+            check(e < 1e-13, "tangent wave speed at J", e, 1e-13);
+            e = mag(m.chordWaveSpeed(J, J) - cT)/cT;
+            check(e < 1e-13, "chord wave speed of equal states: the tangent", e, 1e-13);
+            e = mag(m.chordWaveSpeed(1.2, 1.1) - c)/c;
+            check(e < 1e-13, "chord wave speed in tension: c", e, 1e-13);
+            // A contact point's speed from its volumetric stress Sigma_J =
+            // p_H(J) (the Hugoniot pressure inverted): the tangent one at J
+            e = mag(m.tangentWaveSpeedAtSigmaJ(pH) - cT)/cT;
+            check(e < 1e-12, "tangent wave speed from Sigma_J", e, 1e-12);
+            e = mag(m.tangentWaveSpeedAtSigmaJ(0.5) - c)/c;
+            check(e < 1e-13, "wave speed from a tensile Sigma_J: c", e, 1e-13);
         }
     }
 

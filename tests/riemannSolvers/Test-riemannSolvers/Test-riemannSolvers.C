@@ -122,9 +122,15 @@ int main(int argc, char *argv[])
         );
         autoPtr<materialModel> A3(materialModel::New(dict, 1));
         const interiorRiemannSolvers::hugoniot interiorShock(A3());
-        const vector tH(interiorShock.traction(tL, tR, vL, vR, n, 2.5));
+        const vector tH(interiorShock.traction(tL, tR, vL, vR, n, 2.5, 1));
         check("interior Hugoniot, compressed face t_x", tH.x(), -2 + 0.5*1.05*(-2));
         check("interior Hugoniot, compressed face t_y", tH.y(), 1 + 0.5*2.5*1*2);
+        // Between compressed states (the chord of their pressure with the
+        // impedance 2, above the shock's 1.05) the normal impedance is the
+        // states'; the tangential one does not change
+        const vector tHc(interiorShock.traction(tL, tR, vL, vR, n, 2.5, 2));
+        check("interior Hugoniot, compressed states t_x", tHc.x(), -2 + 0.5*2*(-2));
+        check("interior Hugoniot, compressed states t_y", tHc.y(), 1 + 0.5*2.5*1*2);
 
         // The upwind F flux's share of its traction-jump term, Z = 2: a
         // wave ([t] = -Z [v]) keeps all of it, and so does a jump slower

@@ -364,3 +364,87 @@ def uniaxial_material(path, refuse, tool='svmbPost'):
     return rho, (float(dict_entry(path, 'material/kappa', tool=tool))
                  + 4.0 * float(dict_entry(path, 'material/mu', tool=tool))
                  / 3.0)
+
+
+def uniaxial_stress_curve(path, tool='svmbPost'):
+    """The axial first Piola stress P11(lam) of an elastic material in
+    uniaxial strain, F = diag(lam, 1, 1), as the solver evaluates it
+    (src/materials): the deviatoric part of each model plus the volumetric
+    stress, the Hugoniot pressure kappa (J - 1)/(1 - s (1 - J))^2 in
+    compression where the material has one (kappa (J - 1) otherwise).  With
+    shear stiffness and a Hugoniot the shock is not the one of
+    U = c_p + s v: the deviatoric stress has its own curve."""
+    kind = dict_entry(path, 'material/type', tool=tool)
+    E = dict_entry(path, 'material/E', 'none', tool)
+    if E != 'none':
+        nu = float(dict_entry(path, 'material/nu', tool=tool))
+        mu = float(E) / (2 * (1 + nu))
+        kappa = float(E) / (3 * (1 - 2 * nu))
+    else:
+        mu = float(dict_entry(path, 'material/mu', tool=tool))
+        kappa = float(dict_entry(path, 'material/kappa', tool=tool))
+    s = float(dict_entry(path, 'material/hugoniot/s', '0', tool))
+    xi = float(dict_entry(path, 'material/xi', '0', tool)) \
+        if kind == 'mooneyRivlin' else 0.0
+
+    def volumetric(J):
+        if s > 0 and J < 1:
+            return kappa * (J - 1) / (1 - s * (1 - J)) ** 2
+        return kappa * (J - 1)
+
+    def deviatoric_energy(lam):
+        if kind == 'linearElastic':
+            return 2.0 / 3.0 * mu * (lam - 1) ** 2
+        if kind == 'neoHookean':
+            return 0.5 * mu * (lam ** (-2.0 / 3.0) * (lam ** 2 + 2) - 3)
+        zeta = 0.5 * (mu - 3 * np.sqrt(3.0) * xi)
+        HH = 1 + 2 * lam ** 2
+        return (zeta * lam ** (-2.0 / 3.0) * (lam ** 2 + 2)
+                + xi * HH * np.sqrt(HH) / lam ** 2
+                - 3 * (zeta + np.sqrt(3.0) * xi))
+
+    def P11(lam):
+        h = 1e-5 * lam
+        dev = (deviatoric_energy(lam + h) - deviatoric_energy(lam - h)) \
+            / (2 * h) if mu > 0 else 0.0
+        return dev + volumetric(lam)
+    return P11
+
+
+def shock_jump(P11, rho, sigma):
+    """The particle velocity jump of a compressive shock into material at
+    rest that leaves the stress sigma < 0 behind it (jump conditions:
+    sigma = -rho U dv, dv = U (1 - lam), sigma = P11(lam)): dv =
+    sqrt(-sigma (1 - lam)/rho)."""
+    lo, hi = 1e-3, 1.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if P11(mid) < sigma:
+            lo = mid
+        else:
+            hi = mid
+    lam = 0.5 * (lo + hi)
+    return np.sqrt(max(-sigma * (1 - lam) / rho, 0.0))
+
+
+def shock_plateau(P1, rho1, P2, rho2, v0):
+    """Contact velocity (in Bar Two's frame) and stress of two bars whose
+    impact at v0 sends a shock into each (Bar Two may be a rigid wall:
+    P2 None, then the contact velocity is 0)."""
+    def excess(sigma):
+        dv = shock_jump(P1, rho1, sigma)
+        if P2 is not None:
+            dv += shock_jump(P2, rho2, sigma)
+        return dv - v0
+    lo = -1.0
+    while excess(lo) < 0:
+        lo *= 2
+    hi = 0.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if excess(mid) > 0:
+            lo = mid
+        else:
+            hi = mid
+    sigma = 0.5 * (lo + hi)
+    return v0 - shock_jump(P1, rho1, sigma), sigma

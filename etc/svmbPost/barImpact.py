@@ -148,7 +148,19 @@ def main():
     np.savetxt('results/history.csv', hist, delimiter=',', comments='',
                header='t,vx1,sxx1,ux1,vx2,sxx2,ux2')
 
-    vC, sC = barImpactExact.contact_plateau(M1, M2, rho1, rho2, v0, s)
+    if s > 0:
+        # the shocks' jump conditions on each material's own uniaxial
+        # stress curve (with shear stiffness the deviatoric stress has its
+        # own; for mu = 0 this is barImpactExact's U = c + s v)
+        vC, sC = svmbPost.shock_plateau(
+            svmbPost.uniaxial_stress_curve(
+                'constant/barOne/solidProperties', 'barImpactPost'), rho1,
+            svmbPost.uniaxial_stress_curve(
+                'constant/barTwo/solidProperties', 'barImpactPost'), rho2,
+            v0)
+        vC, sC = float(vC), float(sC)
+    else:
+        vC, sC = barImpactExact.contact_plateau(M1, M2, rho1, rho2, v0, s)
     tEnd = float(t[-1])
     vC += v2
     summary = {'axis': [float(c) for c in a],

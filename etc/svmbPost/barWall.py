@@ -15,7 +15,9 @@ reflected from the free end as a relief front, and the bar leaves at
 V + a n at t0 + 2L/c, stress-free.  A probe at distance d from the struck
 face holds v0 and zero stress until t0 + d/c, then V and -Z a until
 t0 + (2L - d)/c, then V + a n and zero stress.  With a Hugoniot pressure
-(hugoniot { s }) the plateau is the shock's, -rho (c + s a) a, and only
+(hugoniot { s }) the plateau is the shock's, -rho (c + s a) a (with shear
+stiffness from the jump conditions on the material's own uniaxial stress
+curve: svmbPost.shock_plateau), and only
 the plateau is evaluated.  Finite-strain materials without one (neoHookean,
 mooneyRivlin) are evaluated acoustically, which is exact as the impact Mach
 number a/c (in the summary) goes to zero: at a/c = 0.3 the shocked stress
@@ -103,6 +105,16 @@ def setup(region='region0'):
                % -a)
     c = np.sqrt(M / rho)
     Z = rho * c
+    # The shock's state: with a Hugoniot pressure and shear stiffness the
+    # deviatoric stress has its own curve (svmbPost.shock_plateau; for
+    # mu = 0 it is -rho (c + s a) a)
+    stress = -rho * c * a
+    U = c
+    if s > 0:
+        stress = svmbPost.shock_plateau(
+            svmbPost.uniaxial_stress_curve(path, 'barWallPost'), rho, None,
+            0.0, a)[1]
+        U = -stress / (rho * a)
     probes = [vector(p) for p in re.findall(
         r'\([^()]*\)', entry(path, 'probes/locations', '()'))]
     if not probes:
@@ -117,9 +129,9 @@ def setup(region='region0'):
             # (with a Hugoniot pressure: the wall's plateau lasts at least
             # until the shock reaches the free end; the release and the
             # rebound are not evaluated)
-            'plateauDuration': 2 * L / c if s == 0 else L / (c + s * a),
+            'plateauDuration': 2 * L / c if s == 0 else L / U,
             'contactTimeExact': 2 * L / c if s == 0 else None,
-            'stressExact': -rho * (c + s * a) * a,
+            'stressExact': float(stress),
             'reboundVelocityExact': float(np.dot(V, e)) + a * ne
             if s == 0 else None,
             'probeDistances': [abs(np.dot(p, e) - xf) for p in probes]}

@@ -349,6 +349,22 @@ def dict_keywords(path, key):
     return _foam_dictionary(['-keywords', '-entry', key, path]).stdout.split()
 
 
+def elastic_moduli(path, tool='svmbPost'):
+    """The type, shear and bulk moduli and the uniaxial-strain modulus
+    lambda + 2 mu of the material in a solidProperties file (E and nu, or
+    kappa and mu)."""
+    kind = dict_entry(path, 'material/type', tool=tool)
+    E = dict_entry(path, 'material/E', 'none', tool)
+    if E != 'none':
+        E = float(E)
+        nu = float(dict_entry(path, 'material/nu', tool=tool))
+        return (kind, E / (2 * (1 + nu)), E / (3 * (1 - 2 * nu)),
+                E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)))
+    mu = float(dict_entry(path, 'material/mu', tool=tool))
+    kappa = float(dict_entry(path, 'material/kappa', tool=tool))
+    return kind, mu, kappa, kappa + 4.0 * mu / 3.0
+
+
 def uniaxial_material(path, refuse, tool='svmbPost'):
     """rho and the uniaxial-strain modulus lambda + 2 mu (a bar between
     symmetry sides) of an elastic material in a solidProperties file;
@@ -357,13 +373,7 @@ def uniaxial_material(path, refuse, tool='svmbPost'):
     if kind not in ('linearElastic', 'neoHookean', 'mooneyRivlin'):
         refuse('the material of %s is %s, not an elastic one' % (path, kind))
     rho = float(dict_entry(path, 'material/rho', tool=tool))
-    E = dict_entry(path, 'material/E', 'none', tool)
-    if E != 'none':
-        nu = float(dict_entry(path, 'material/nu', tool=tool))
-        return rho, float(E) * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
-    return rho, (float(dict_entry(path, 'material/kappa', tool=tool))
-                 + 4.0 * float(dict_entry(path, 'material/mu', tool=tool))
-                 / 3.0)
+    return rho, elastic_moduli(path, tool)[3]
 
 
 def uniaxial_stress_curve(path, tool='svmbPost'):
@@ -374,15 +384,7 @@ def uniaxial_stress_curve(path, tool='svmbPost'):
     compression where the material has one (kappa (J - 1) otherwise).  With
     shear stiffness and a Hugoniot the shock is not the one of
     U = c_p + s v: the deviatoric stress has its own curve."""
-    kind = dict_entry(path, 'material/type', tool=tool)
-    E = dict_entry(path, 'material/E', 'none', tool)
-    if E != 'none':
-        nu = float(dict_entry(path, 'material/nu', tool=tool))
-        mu = float(E) / (2 * (1 + nu))
-        kappa = float(E) / (3 * (1 - 2 * nu))
-    else:
-        mu = float(dict_entry(path, 'material/mu', tool=tool))
-        kappa = float(dict_entry(path, 'material/kappa', tool=tool))
+    kind, mu, kappa, _ = elastic_moduli(path, tool)
     s = float(dict_entry(path, 'material/hugoniot/s', '0', tool))
     xi = float(dict_entry(path, 'material/xi', '0', tool)) \
         if kind == 'mooneyRivlin' else 0.0

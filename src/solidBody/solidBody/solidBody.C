@@ -2666,6 +2666,23 @@ void Foam::solidBody::describe(Ostream& os) const
     riemann_->describe(os);
     os  << nl;
     scheme_->describe(os, "        ");
+    if (material_->hugoniot())
+    {
+        // The stable step's anticipation of a shock (stableTimeStep.H), so
+        // that a small step before any contact is not a surprise
+        scalar vMax = 0;
+        forAll(q_, i)
+        {
+            vMax = max(vMax, magSqr(fluxVelocity(q_[i])));
+        }
+        vMax = Foam::sqrt(returnReduce(vMax, maxOp<scalar>()));
+        scalar Jstar;
+        const scalar factor =
+            stableTimeStep::anticipatedWaveFactor(material_(), vMax, &Jstar);
+        os  << "    step       held for the wave speed of the state a rigid "
+            << "wall would shock the body to at its largest speed " << vMax
+            << ": " << factor << " c_p (J = " << Jstar << ")" << nl;
+    }
     if (returnReduce(planeStrain_->size(), sumOp<label>()))
     {
         os  << "    plane strain: both copies of "

@@ -290,6 +290,32 @@ Foam::stableTimeStep::stableTimeStep
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::stableTimeStep::anticipatedWaveFactor
+(
+    const materialModel& material,
+    const scalar vMax,
+    scalar* Jstar
+)
+{
+    if (Jstar)
+    {
+        *Jstar = 1;
+    }
+    if (!material.hugoniot())
+    {
+        return 1;
+    }
+    const scalar cp = material.cp();
+    const scalar s = material.hugoniotS();
+    const scalar J = 1 - vMax/(cp + s*vMax);
+    if (Jstar)
+    {
+        *Jstar = J;
+    }
+    return max(1 + s*vMax/cp, material.tangentWaveSpeed(J)/cp);
+}
+
+
 void Foam::stableTimeStep::useCentralFFlux(const bool central)
 {
     if (!central)
@@ -384,16 +410,7 @@ Foam::scalar Foam::stableTimeStep::deltaT
     // limit until the step had followed its state, and its stress rang at
     // onset (a bar on a wall at v0 = c_p: 3.7 % beyond the plateau against
     // 2.9 %; doc/results.md, "The J rate of compressed Hugoniot material")
-    scalar shockFactor = 1;
-    if (hugoniot)
-    {
-        const scalar s = material_.hugoniotS();
-        shockFactor = max
-        (
-            1 + s*vMax/cp,
-            material_.tangentWaveSpeed(1 - vMax/(cp + s*vMax))/cp
-        );
-    }
+    const scalar shockFactor = anticipatedWaveFactor(material_, vMax);
 
     const scalar kRef = material_.kappa() + material_.tieModulus();
     const scalar rhoCp2 = material_.rho()*sqr(cp);

@@ -2385,20 +2385,23 @@ void Foam::solidBody::endStep(const labelUList* points)
 }
 
 
+Foam::scalar Foam::solidBody::largestSpeed() const
+{
+    scalar v2 = 0;
+    forAll(q_, i)
+    {
+        v2 = max(v2, magSqr(fluxVelocity(q_[i])));
+    }
+    return Foam::sqrt(returnReduce(v2, maxOp<scalar>()));
+}
+
+
 Foam::scalar Foam::solidBody::localStableDeltaT
 (
     UList<scalar>* pointDeltaT
 ) const
 {
-    scalar vMax = 0;
-    if (material_->hugoniot())
-    {
-        forAll(q_, i)
-        {
-            vMax = max(vMax, magSqr(fluxVelocity(q_[i])));
-        }
-        vMax = Foam::sqrt(returnReduce(vMax, maxOp<scalar>()));
-    }
+    const scalar vMax = material_->hugoniot() ? largestSpeed() : 0;
     if (heldLimit_)
     {
         updateHeldClosed();
@@ -2670,12 +2673,7 @@ void Foam::solidBody::describe(Ostream& os) const
     {
         // The stable step's anticipation of a shock (stableTimeStep.H), so
         // that a small step before any contact is not a surprise
-        scalar vMax = 0;
-        forAll(q_, i)
-        {
-            vMax = max(vMax, magSqr(fluxVelocity(q_[i])));
-        }
-        vMax = Foam::sqrt(returnReduce(vMax, maxOp<scalar>()));
+        const scalar vMax = largestSpeed();
         scalar Jstar;
         const scalar factor =
             stableTimeStep::anticipatedWaveFactor(material_(), vMax, &Jstar);

@@ -493,14 +493,12 @@ Foam::scalar Foam::stableTimeStep::deltaT
 
     // Each point's wave speed relative to c_p and the state's stretch:
     // the factor of its undeformed momentum rate
-    auto waveFactor = [&](const label i, scalar& c)
+    // (cState: the state's own speed, c: at least the anticipated one)
+    auto waveFactor = [&](const label i, scalar& c, scalar& cState)
     {
         // Wave speed of the state relative to c_p
-        c = shockFactor;
-        if (J[i] < 1)
-        {
-            c = max(c, material_.tangentWaveSpeed(J[i])/cp);
-        }
+        cState = J[i] < 1 ? material_.tangentWaveSpeed(J[i])/cp : 1.0;
+        c = max(shockFactor, cState);
 
         // The stretch of the point's fastest direction: the largest
         // |F^-T n|^2 = |H n|^2/det(F)^2 over its faces.  A volume grown
@@ -523,36 +521,26 @@ Foam::scalar Foam::stableTimeStep::deltaT
     {
         // Momentum: the wave speed times the stretch; J stabilisation:
         // k sum_j 2 S_ij/V with the state's tangent k
-        scalar c;
-        scalar r = rMomentum_[i]*waveFactor(i, c);
-        if (stateImpedanceJ_ && !sJ_.empty())
+        scalar c, cState;
+        scalar r = rMomentum_[i]*waveFactor(i, c, cState);
+        if (!sJ_.empty())
         {
-            // The state's stiffness over the state's impedances (sJ_),
-            // and ahead of a shock (the state's speed below the
-            // anticipated one, shockFactor) that rate times the ratio of
-            // the two speeds: the stiffness and the impedance of the
-            // shocked state grow together, and the J rate with the wave
-            // speed, as the momentum's.  (The anticipated speed squared
-            // over the reference impedance held the step of a Hugoniot
-            // bar 2.2 (Mach 1) to 6.7 (Mach 5) times below the
+            // With the state's impedances in sJ_ (stateImpedanceJ_): the
+            // state's stiffness over them, and ahead of a shock (the
+            // state's speed below the anticipated one) that rate times
+            // the ratio of the two speeds: the stiffness and the impedance
+            // of the shocked state grow together, and the J rate with the
+            // wave speed, as the momentum's.  (The anticipated speed
+            // squared over the reference impedance held the step of a
+            // Hugoniot bar 2.2 (Mach 1) to 6.7 (Mach 5) times below the
             // momentum's: doc/results.md, "The J rate of compressed
-            // Hugoniot material")
-            const scalar cState =
-                J[i] < 1 ? material_.tangentWaveSpeed(J[i])/cp : 1.0;
-            const scalar k = (sqr(cState)*rhoCp2 - 4.0/3.0*material_.mu()
+            // Hugoniot material.")  Otherwise the anticipated speed's
+            // stiffness over the reference impedance
+            const scalar cJ = stateImpedanceJ_ ? cState : c;
+            const scalar ahead = stateImpedanceJ_ ? max(c/cState, 1.0) : 1.0;
+            const scalar k = (sqr(cJ)*rhoCp2 - 4.0/3.0*material_.mu()
               + material_.tieModulus())/kRef;
-            r = max
-            (
-                r,
-                max(k, 1.0)*max(shockFactor/cState, 1.0)
-               *kRef*JFactor*sJ_[i]/V[i]
-            );
-        }
-        else if (!sJ_.empty())
-        {
-            const scalar k = (sqr(c)*rhoCp2 - 4.0/3.0*material_.mu()
-              + material_.tieModulus())/kRef;
-            r = max(r, max(k, 1.0)*kRef*JFactor*sJ_[i]/V[i]);
+            r = max(r, max(k, 1.0)*ahead*kRef*JFactor*sJ_[i]/V[i]);
         }
         const scalar dti = stepOfRate(r);
         if (pointDeltaT)
@@ -570,7 +558,11 @@ Foam::scalar Foam::stableTimeStep::deltaT
         limitHeldPoints
         (
             *closed,
-            [&](const label i) { scalar c; return waveFactor(i, c); },
+            [&](const label i)
+            {
+                scalar c, cState;
+                return waveFactor(i, c, cState);
+            },
             dt, pointDeltaT
         );
     }

@@ -241,6 +241,22 @@ void Foam::solidBoundaryConditions::rigidWall::markClosing
 }
 
 
+Foam::scalar Foam::solidBoundaryConditions::rigidWall::strikeSpeed
+(
+    const boundBox& v,
+    const scalar t
+) const
+{
+    const pointField corners(v.points());
+    scalar s = 0;
+    for (const point& corner : corners)
+    {
+        s = max(s, closingSpeed(corner));
+    }
+    return s;
+}
+
+
 void Foam::solidBoundaryConditions::rigidWall::writeSummary
 (
     Ostream& os,

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "symmetry.H"
+#include "unitConversion.H"
 #include "acousticFormulas.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -24,8 +25,73 @@ Foam::solidBoundaryConditions::symmetry::symmetry
     const dictionary& dict
 )
 :
-    solidBoundaryCondition(dual, patchi, dict)
-{}
+    solidBoundaryCondition(dual, patchi, dict),
+    curved_(false)
+{
+    // The planes the patch consists of: its sub-faces' normals, equal
+    // within a degree, gathered from all processors
+    const scalar tolerance = std::cos(degToRad(1.0));
+    auto addPlane = [&](const vector& n, DynamicList<vector>& planes)
+    {
+        for (const vector& m : planes)
+        {
+            if ((n & m) > tolerance)
+            {
+                return;
+            }
+        }
+        planes.append(n);
+    };
+    DynamicList<vector> local;
+    for (const vector& A : dual.subFaces(patchi).area)
+    {
+        const scalar magA = mag(A);
+        if (magA > VSMALL && local.size() <= maxPlanes)
+        {
+            addPlane(A/magA, local);
+        }
+    }
+    List<List<vector>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = local;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    DynamicList<vector> planes;
+    for (const List<vector>& proc : all)
+    {
+        for (const vector& n : proc)
+        {
+            addPlane(n, planes);
+        }
+    }
+    curved_ = (planes.size() > maxPlanes);
+    if (!curved_)
+    {
+        normals_.transfer(planes);
+    }
+}
+
+
+Foam::scalar Foam::solidBoundaryConditions::symmetry::strikeSpeed
+(
+    const boundBox& v,
+    const scalar t
+) const
+{
+    const pointField corners(v.points());
+    scalar s = 0;
+    for (const point& corner : corners)
+    {
+        if (curved_)
+        {
+            s = max(s, mag(corner));
+        }
+        for (const vector& n : normals_)
+        {
+            s = max(s, corner & n);
+        }
+    }
+    return s;
+}
 
 
 Foam::scalar Foam::solidBoundaryConditions::symmetry::contactState

@@ -33,6 +33,23 @@ Foam::solidBoundaryConditions::velocity::velocity
 }
 
 
+Foam::scalar Foam::solidBoundaryConditions::velocity::strikeSpeed
+(
+    const boundBox& v,
+    const scalar t
+) const
+{
+    const vector vb(velocity_->value(t));
+    const pointField corners(v.points());
+    scalar s = 0;
+    for (const point& corner : corners)
+    {
+        s = max(s, mag(vb - corner));
+    }
+    return s;
+}
+
+
 Foam::scalar Foam::solidBoundaryConditions::velocity::contactState
 (
     const vector& n,

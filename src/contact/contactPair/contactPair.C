@@ -1415,6 +1415,7 @@ Foam::contactPair::contactPair
     nMappings_(0),
     mappingTime_(0),
     wallTime_(0),
+    stepsClosed_(0),
     maxPenetration_(0),
     deltaT_(GREAT),
     stage_(0)
@@ -1590,6 +1591,121 @@ Foam::scalar Foam::contactPair::impactMach
     return
         mag(b.initialVelocity() - other.initialVelocity())
        *ZOther/(Z + ZOther)/m.cp();
+}
+
+
+const Foam::label Foam::contactPair::onsetSteps = 10;
+
+const Foam::label Foam::contactPair::approachSteps = 3;
+
+
+Foam::scalar Foam::contactPair::hugoniotShare
+(
+    const materialModel& m,
+    const materialModel& other,
+    const scalar w
+)
+{
+    if (!m.hugoniot() || !other.hugoniot() || w <= 0)
+    {
+        return max(w, 0);
+    }
+    // rho_m (c_m + s_m u) u = rho_o (c_o + s_o (w - u)) (w - u), that is
+    // a u^2 + b u - c = 0 with b > 0 and c >= 0; the left side less the
+    // right grows from -c at u = 0 to a positive value at u = w, and its
+    // root there is 2 c/(b + sqrt(b^2 + 4 a c)) (no cancellation)
+    const scalar rm = m.rho(), cm = m.cp(), sm = m.hugoniotS();
+    const scalar ro = other.rho(), co = other.cp(), so = other.hugoniotS();
+    const scalar a = rm*sm - ro*so;
+    const scalar b = rm*cm + ro*co + 2*ro*so*w;
+    const scalar c = ro*(co + so*w)*w;
+    const scalar u = 2*c/(b + Foam::sqrt(max(sqr(b) + 4*a*c, 0)));
+    return min(max(u, 0), w);
+}
+
+
+void Foam::contactPair::anticipateImpacts
+(
+    const PtrList<solidBody>& bodies,
+    const PtrList<contactPair>& contacts
+)
+{
+    bool hugoniot = false;
+    for (const solidBody& b : bodies)
+    {
+        hugoniot = hugoniot || b.material().hugoniot();
+    }
+    if (!hugoniot)
+    {
+        // (only a Hugoniot body's step anticipates an impact)
+        return;
+    }
+    List<boundBox> range(bodies.size());
+    forAll(bodies, bi)
+    {
+        range[bi] = bodies[bi].velocityRange();
+        bodies[bi].anticipateImpactSpeed
+        (
+            bodies[bi].ownStrikeSpeed(range[bi])
+        );
+    }
+    for (const contactPair& c : contacts)
+    {
+        label a = -1, b = -1;
+        forAll(bodies, bi)
+        {
+            a = (&bodies[bi] == c.A_.body) ? bi : a;
+            b = (&bodies[bi] == c.B_.body) ? bi : b;
+        }
+        const boundBox& ra = range[a];
+        const boundBox& rb = range[b];
+        if (!ra.valid() || !rb.valid())
+        {
+            continue;
+        }
+        // The largest |v_a - v_b| over the two boxes, component by
+        // component
+        const vector w
+        (
+            max(ra.max() - rb.min(), rb.max() - ra.min())
+        );
+        const scalar closing = mag(w);
+        const solidBody& A = bodies[a];
+        const solidBody& B = bodies[b];
+        bool inContact;
+        scalar timeToClose;
+        c.gapState(inContact, timeToClose);
+        c.stepsClosed_ = inContact ? c.stepsClosed_ + 1 : 0;
+        if (!inContact && timeToClose > approachSteps*c.deltaT_)
+        {
+            // Open and not closing within the next steps: no impact yet
+            // (the steps before it are the bodies' own; the gap is closed
+            // on a step boundary, deltaTLimit)
+            continue;
+        }
+        if (c.stepsClosed_ <= onsetSteps)
+        {
+            A.anticipateImpactSpeed(max(A.impactSpeed(), closing));
+            B.anticipateImpactSpeed(max(B.impactSpeed(), closing));
+            continue;
+        }
+        A.anticipateImpactSpeed
+        (
+            max
+            (
+                A.impactSpeed(),
+                hugoniotShare(A.material(), B.material(), closing)
+            )
+        );
+        B.anticipateImpactSpeed
+        (
+            max
+            (
+                B.impactSpeed(),
+                hugoniotShare(B.material(), A.material(), closing)
+            )
+        );
+    }
 }
 
 
@@ -2133,27 +2249,14 @@ Foam::label Foam::contactPair::localOffset(const label localSize)
 }
 
 
-Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
+template<class PairFn>
+void Foam::contactPair::forEachPointPair
+(
+    const List<pointData>& a,
+    const List<pointData>& b,
+    const PairFn& pairFn
+) const
 {
-    const scopeTimer timer(wallTime_);
-    const List<pointData> a(exchangeData(A_));
-    const List<pointData> b(exchangeData(B_));
-
-    scalar dt = GREAT;
-    auto limit = [&](const pointData& da, const pointData& db)
-    {
-        const vector n(gapDirection(pairNormal(da, db)));
-        const scalar gap = (db.x - da.x) & n;
-        const scalar closing = (da.v - db.v) & n;
-        if
-        (
-            gap > gapTolerance*da.length && closing > 0
-         && gap > closing*dtFloor
-        )
-        {
-            dt = min(dt, gap/closing);
-        }
-    };
     if (useAMI_)
     {
         // Every overlap pair between its two points' own states
@@ -2161,23 +2264,80 @@ Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
         {
             for (const label k : A_.stateFrom[i])
             {
-                limit(a[i], b[k]);
+                pairFn(a[i], b[k]);
             }
         }
-        return returnReduce(dt, minOp<scalar>());
+        return;
     }
-
     // A's points against their matched partners
     pointData partner;
     forAll(A_.points, i)
     {
         if (partnerData(A_, i, b, partner))
         {
-            limit(a[i], partner);
+            pairFn(a[i], partner);
         }
     }
-    reduce(dt, minOp<scalar>());
-    return dt;
+}
+
+
+Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
+{
+    const scopeTimer timer(wallTime_);
+    const List<pointData> a(exchangeData(A_));
+    const List<pointData> b(exchangeData(B_));
+
+    scalar dt = GREAT;
+    forEachPointPair
+    (
+        a, b,
+        [&](const pointData& da, const pointData& db)
+        {
+            const vector n(gapDirection(pairNormal(da, db)));
+            const scalar gap = (db.x - da.x) & n;
+            const scalar closing = (da.v - db.v) & n;
+            if
+            (
+                gap > gapTolerance*da.length && closing > 0
+             && gap > closing*dtFloor
+            )
+            {
+                dt = min(dt, gap/closing);
+            }
+        }
+    );
+    return returnReduce(dt, minOp<scalar>());
+}
+
+
+void Foam::contactPair::gapState(bool& closed, scalar& timeToClose) const
+{
+    const scopeTimer timer(wallTime_);
+    const List<pointData> a(exchangeData(A_));
+    const List<pointData> b(exchangeData(B_));
+
+    closed = false;
+    timeToClose = GREAT;
+    forEachPointPair
+    (
+        a, b,
+        [&](const pointData& da, const pointData& db)
+        {
+            const vector n(gapDirection(pairNormal(da, db)));
+            const scalar gap = (db.x - da.x) & n;
+            const scalar closing = (da.v - db.v) & n;
+            if (gap <= gapTolerance*da.length)
+            {
+                closed = true;
+            }
+            else if (closing > 0)
+            {
+                timeToClose = min(timeToClose, gap/closing);
+            }
+        }
+    );
+    reduce(closed, orOp<bool>());
+    reduce(timeToClose, minOp<scalar>());
 }
 
 

@@ -337,6 +337,7 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
     invalidQuantity_()
 {
     heldLimit_ = false;
+    impactSpeed_ = -1;
     releaseCentralF_ = false;
 
     // The dual mesh holds all the solver needs: free OpenFOAM's
@@ -2385,14 +2386,37 @@ void Foam::solidBody::endStep(const labelUList* points)
 }
 
 
-Foam::scalar Foam::solidBody::largestSpeed() const
+Foam::boundBox Foam::solidBody::velocityRange() const
 {
-    scalar v2 = 0;
+    boundBox range;
     forAll(q_, i)
     {
-        v2 = max(v2, magSqr(fluxVelocity(q_[i])));
+        range.add(fluxVelocity(q_[i]));
     }
-    return Foam::sqrt(returnReduce(v2, maxOp<scalar>()));
+    range.reduce();
+    return range;
+}
+
+
+Foam::scalar Foam::solidBody::ownStrikeSpeed(const boundBox& v) const
+{
+    if (!v.valid())
+    {
+        return 0;
+    }
+    scalar s = mag(v.span());
+    const scalar t = runTime_.value();
+    for (const solidBoundaryCondition& bc : bcs_)
+    {
+        s = max(s, bc.strikeSpeed(v, t));
+    }
+    return s;
+}
+
+
+Foam::scalar Foam::solidBody::impactSpeed() const
+{
+    return impactSpeed_ < 0 ? ownStrikeSpeed(velocityRange()) : impactSpeed_;
 }
 
 
@@ -2401,7 +2425,7 @@ Foam::scalar Foam::solidBody::localStableDeltaT
     UList<scalar>* pointDeltaT
 ) const
 {
-    const scalar vMax = material_->hugoniot() ? largestSpeed() : 0;
+    const scalar vMax = material_->hugoniot() ? impactSpeed() : 0;
     if (heldLimit_)
     {
         updateHeldClosed();
@@ -2673,13 +2697,17 @@ void Foam::solidBody::describe(Ostream& os) const
     {
         // The stable step's anticipation of a shock (stableTimeStep.H), so
         // that a small step before any contact is not a surprise
-        const scalar vMax = largestSpeed();
+        const scalar vImpact = impactSpeed();
         scalar Jstar;
         const scalar factor =
-            stableTimeStep::anticipatedWaveFactor(material_(), vMax, &Jstar);
-        os  << "    step       held for the wave speed of the state a rigid "
-            << "wall would shock the body to at its largest speed " << vMax
-            << ": " << factor << " c_p (J = " << Jstar << ")" << nl;
+            stableTimeStep::anticipatedWaveFactor
+            (
+                material_(), vImpact, &Jstar
+            );
+        os  << "    step       held for the wave speed of the state an "
+            << "impact at " << vImpact << " (the fastest closing on its "
+            << "walls, its pairs or within it) would shock it to: "
+            << factor << " c_p (J = " << Jstar << ")" << nl;
     }
     if (returnReduce(planeStrain_->size(), sumOp<label>()))
     {

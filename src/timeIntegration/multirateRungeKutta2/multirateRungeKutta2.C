@@ -973,6 +973,8 @@ Foam::scalar Foam::multirateRungeKutta2::deltaT
     const scalar cfl
 )
 {
+    // (a Hugoniot body's step anticipates the fastest impact it can meet)
+    contactPair::anticipateImpacts(bodies, contacts_);
     scalar dtMin = GREAT;
     forAll(bodies, bi)
     {

@@ -401,8 +401,9 @@ Foam::scalar Foam::stableTimeStep::deltaT
 
     const scalar cp = material_.cp();
     // The wave speed a Hugoniot material's points must be stepped for
-    // ahead of an impact: a point struck at the body's largest speed vMax
-    // (by a rigid wall; a softer partner takes less of the jump) reaches,
+    // ahead of an impact: a point struck at the body's impact speed vMax
+    // (the fastest closing on its walls, its pairs or within it:
+    // contactPair::anticipateImpacts) reaches,
     // within the first steps of contact, the shocked state of that jump,
     // 1 - J = vMax/(c_p + s vMax), whose tangent speed exceeds the shock
     // speed c_p + s vMax (sqrt(12) against 2 c_p at vMax = c_p, s = 1).

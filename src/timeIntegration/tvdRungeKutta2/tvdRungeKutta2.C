@@ -14,6 +14,8 @@ Foam::scalar Foam::tvdRungeKutta2::stableDeltaT
     const scalar cfl
 )
 {
+    // (a Hugoniot body's step anticipates the fastest impact it can meet)
+    contactPair::anticipateImpacts(bodies, contacts);
     scalar dtStable = GREAT;
     for (const solidBody& b : bodies)
     {

@@ -22,6 +22,9 @@ Description
         for any compressive state it equals the two-body solver against the
         state's mirror image (v^C = 0 there); an expansive jump is
         acoustic;
+      - the Hugoniot impedance match that shares a pair's closing speed
+        between its bodies (contactPair::hugoniotShare): 50 each for A3,
+        A4's exact plateau velocity 100 (sqrt(2) - 1), equal pressures;
       - one-sided formulas: prescribed traction (free surface), prescribed
         velocity (rigid), symmetry (mixed), frictionless slip, Coulomb
         stick and slip on a rigid wall.
@@ -36,6 +39,7 @@ Description
 #include "pressureDominated.H"
 #include "interiorHugoniot.H"
 #include "materialModel.H"
+#include "contactPair.H"
 #include "IStringStream.H"
 
 using namespace Foam;
@@ -349,6 +353,46 @@ int main(int argc, char *argv[])
             tn + Zp*(0 - vn) - hugoniot::rigidShockTerm(0 - vn, mL)
         );
         check("expansive jump: no shock term", hugoniot::rigidShockTerm(5, mL), 0);
+    }
+
+    Info<< "Hugoniot impedance match of a pair's closing speed" << endl;
+    {
+        // contactPair::hugoniotShare: the jump each side takes, at equal
+        // shock pressures rho0 (c_p + s u) u on both sides
+        auto material = [](const char* text)
+        {
+            const dictionary dict((IStringStream(text))());
+            return materialModel::New(dict, 1);
+        };
+        autoPtr<materialModel> one
+        (
+            material("type neoHookean; rho 0.01; kappa 100; mu 0; hugoniot { s 1; }")
+        );
+        autoPtr<materialModel> two
+        (
+            material("type neoHookean; rho 0.02; kappa 100; mu 0; hugoniot { s 1; }")
+        );
+        autoPtr<materialModel> elastic
+        (
+            material("type neoHookean; rho 0.02; kappa 100; mu 0;")
+        );
+        // A3: identical bars at 100 take 50 each
+        check("A3: each side's jump", contactPair::hugoniotShare(one(), one(), 100), 50);
+        // A4 (rho0 0.01, c_p 100 against 0.02, 70.71; 100 apart): the
+        // exact plateau velocity is 100 (sqrt(2) - 1)
+        const scalar uOne = contactPair::hugoniotShare(one(), two(), 100);
+        const scalar uTwo = contactPair::hugoniotShare(two(), one(), 100);
+        check("A4: Bar Two's jump", uTwo, 100*(Foam::sqrt(2.0) - 1));
+        check("A4: Bar One's jump", uOne, 100*(2 - Foam::sqrt(2.0)));
+        check
+        (
+            "A4: equal shock pressures",
+            0.01*(100 + uOne)*uOne,
+            0.02*(Foam::sqrt(100/0.02) + uTwo)*uTwo
+        );
+        // A partner without a Hugoniot pressure bounds as a rigid one
+        check("elastic partner: the whole speed", contactPair::hugoniotShare(one(), elastic(), 100), 100);
+        check("at rest", contactPair::hugoniotShare(one(), two(), 0), 0);
     }
 
     Info<< "One-sided formulas, Zp = 2, Zs = 1, n = x" << endl;

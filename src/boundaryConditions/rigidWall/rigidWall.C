@@ -33,6 +33,7 @@ Foam::solidBoundaryConditions::rigidWall::rigidWall
     friction_(frictionLaw::New(dict, "patch '" + patchName() + "'")),
     hugoniot_(true),
     touch_(0),
+    approaching_(false),
     maxDepth_(0)
 {
     {
@@ -244,9 +245,33 @@ void Foam::solidBoundaryConditions::rigidWall::markClosing
 Foam::scalar Foam::solidBoundaryConditions::rigidWall::strikeSpeed
 (
     const boundBox& v,
-    const scalar t
+    const UList<vector>& u,
+    const UList<fluxState>& q,
+    const scalar t,
+    const scalar window
 ) const
 {
+    // Struck once a point touches the wall or reaches it within the
+    // window, and from then on while a point still closes on it (the
+    // anticipated steps are shorter, and so the window: the approach is
+    // not given up for them).  Before the first step (no window) any
+    // approach counts, for that step only
+    const pointField& X = dual_.mesh().points();
+    bool near = false, closing = false;
+    for (const label i : dual_.subFaces(patchi()).point)
+    {
+        const scalar gapi = gap(X[i] + u[i], t) - touch_;
+        const scalar approach = closingSpeed(fluxVelocity(q[i]));
+        near = near || gapi <= approach*window;
+        closing = closing || approach > 0;
+    }
+    reduce(near, orOp<bool>());
+    reduce(closing, orOp<bool>());
+    approaching_ = (near && window < GREAT) || (approaching_ && closing);
+    if (!near && !approaching_)
+    {
+        return 0;
+    }
     const pointField corners(v.points());
     scalar s = 0;
     for (const point& corner : corners)

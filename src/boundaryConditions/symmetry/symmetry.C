@@ -74,7 +74,10 @@ Foam::solidBoundaryConditions::symmetry::symmetry
 Foam::scalar Foam::solidBoundaryConditions::symmetry::strikeSpeed
 (
     const boundBox& v,
-    const scalar t
+    const UList<vector>& u,
+    const UList<fluxState>& q,
+    const scalar t,
+    const scalar window
 ) const
 {
     const pointField corners(v.points());

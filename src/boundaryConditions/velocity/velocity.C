@@ -36,7 +36,10 @@ Foam::solidBoundaryConditions::velocity::velocity
 Foam::scalar Foam::solidBoundaryConditions::velocity::strikeSpeed
 (
     const boundBox& v,
-    const scalar t
+    const UList<vector>& u,
+    const UList<fluxState>& q,
+    const scalar t,
+    const scalar window
 ) const
 {
     const vector vb(velocity_->value(t));

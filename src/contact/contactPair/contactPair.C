@@ -1416,8 +1416,10 @@ Foam::contactPair::contactPair
     mappingTime_(0),
     wallTime_(0),
     stepsClosed_(0),
+    approaching_(false),
     maxPenetration_(0),
     deltaT_(GREAT),
+    recentDeltaT_(GREAT),
     stage_(0)
 {
     if (dict.found("s"))
@@ -1596,8 +1598,6 @@ Foam::scalar Foam::contactPair::impactMach
 
 const Foam::label Foam::contactPair::onsetSteps = 10;
 
-const Foam::label Foam::contactPair::approachSteps = 3;
-
 
 Foam::scalar Foam::contactPair::hugoniotShare
 (
@@ -1676,11 +1676,21 @@ void Foam::contactPair::anticipateImpacts
         scalar timeToClose;
         c.gapState(inContact, timeToClose);
         c.stepsClosed_ = inContact ? c.stepsClosed_ + 1 : 0;
-        if (!inContact && timeToClose > approachSteps*c.deltaT_)
+        // Approaching once a gap closes within solidBody::approachSteps of
+        // the pair's recent steps, and from then on while a gap still
+        // closes (the anticipated steps are shorter, and so the window).
+        // Before the pair's first step (no window) any closing gap counts,
+        // for that step only
+        const bool near =
+            inContact
+         || timeToClose <= solidBody::approachSteps*c.recentDeltaT_;
+        c.approaching_ =
+            (near && c.recentDeltaT_ < GREAT)
+         || (c.approaching_ && timeToClose < GREAT);
+        if (!near && !c.approaching_)
         {
             // Open and not closing within the next steps: no impact yet
-            // (the steps before it are the bodies' own; the gap is closed
-            // on a step boundary, deltaTLimit)
+            // (the steps before it are the bodies' own)
             continue;
         }
         if (c.stepsClosed_ <= onsetSteps)
@@ -2122,6 +2132,7 @@ void Foam::contactPair::addFluxes()
 void Foam::contactPair::startStep(const scalar dt)
 {
     const scopeTimer timer(wallTime_);
+    recentDeltaT_ = (deltaT_ < GREAT) ? max(dt, deltaT_) : dt;
     deltaT_ = dt;
     stage_ = 0;
 

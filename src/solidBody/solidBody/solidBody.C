@@ -338,6 +338,9 @@ Foam::solidBody::solidBody(const Time& runTime, const word& region)
 {
     heldLimit_ = false;
     impactSpeed_ = -1;
+    lastDeltaT_ = 0;
+    recentDeltaT_ = 0;
+    strikeIndex_ = -1;
     releaseCentralF_ = false;
 
     // The dual mesh holds all the solver needs: free OpenFOAM's
@@ -2386,6 +2389,9 @@ void Foam::solidBody::endStep(const labelUList* points)
 }
 
 
+const Foam::label Foam::solidBody::approachSteps = 3;
+
+
 Foam::boundBox Foam::solidBody::velocityRange() const
 {
     boundBox range;
@@ -2404,11 +2410,27 @@ Foam::scalar Foam::solidBody::ownStrikeSpeed(const boundBox& v) const
     {
         return 0;
     }
+    // The window in which a wall's approach counts: approachSteps of the
+    // larger of the last two steps (a step shortened to land on a write
+    // time does not shrink it); any distance before the first step
+    scalar window = GREAT;
+    const label index = runTime_.timeIndex();
+    if (index != runTime_.startTimeIndex())
+    {
+        if (index != strikeIndex_)
+        {
+            const scalar dt = runTime_.deltaTValue();
+            recentDeltaT_ = max(dt, lastDeltaT_);
+            lastDeltaT_ = dt;
+            strikeIndex_ = index;
+        }
+        window = approachSteps*recentDeltaT_;
+    }
     scalar s = mag(v.span());
     const scalar t = runTime_.value();
     for (const solidBoundaryCondition& bc : bcs_)
     {
-        s = max(s, bc.strikeSpeed(v, t));
+        s = max(s, bc.strikeSpeed(v, u_, q_, t, window));
     }
     return s;
 }

@@ -272,13 +272,10 @@ Foam::scalar Foam::solidBoundaryConditions::rigidWall::strikeSpeed
     {
         return 0;
     }
-    const pointField corners(v.points());
-    scalar s = 0;
-    for (const point& corner : corners)
-    {
-        s = max(s, closingSpeed(corner));
-    }
-    return s;
+    return largestAtCorners
+    (
+        v, [this](const vector& vi) { return closingSpeed(vi); }
+    );
 }
 
 

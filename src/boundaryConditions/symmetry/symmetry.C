@@ -80,20 +80,19 @@ Foam::scalar Foam::solidBoundaryConditions::symmetry::strikeSpeed
     const scalar window
 ) const
 {
-    const pointField corners(v.points());
-    scalar s = 0;
-    for (const point& corner : corners)
-    {
-        if (curved_)
+    return largestAtCorners
+    (
+        v,
+        [this](const vector& vi)
         {
-            s = max(s, mag(corner));
+            scalar s = curved_ ? mag(vi) : 0;
+            for (const vector& n : normals_)
+            {
+                s = max(s, vi & n);
+            }
+            return s;
         }
-        for (const vector& n : normals_)
-        {
-            s = max(s, corner & n);
-        }
-    }
-    return s;
+    );
 }
 
 

@@ -43,13 +43,10 @@ Foam::scalar Foam::solidBoundaryConditions::velocity::strikeSpeed
 ) const
 {
     const vector vb(velocity_->value(t));
-    const pointField corners(v.points());
-    scalar s = 0;
-    for (const point& corner : corners)
-    {
-        s = max(s, mag(vb - corner));
-    }
-    return s;
+    return largestAtCorners
+    (
+        v, [&vb](const vector& vi) { return mag(vb - vi); }
+    );
 }
 
 

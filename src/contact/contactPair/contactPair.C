@@ -2260,14 +2260,19 @@ Foam::label Foam::contactPair::localOffset(const label localSize)
 }
 
 
-template<class PairFn>
-void Foam::contactPair::forEachPointPair
+template<class GapFn>
+void Foam::contactPair::forEachGap
 (
     const List<pointData>& a,
     const List<pointData>& b,
-    const PairFn& pairFn
+    const GapFn& gapFn
 ) const
 {
+    auto pairGap = [&](const pointData& da, const pointData& db)
+    {
+        const vector n(gapDirection(pairNormal(da, db)));
+        gapFn(da, (db.x - da.x) & n, (da.v - db.v) & n);
+    };
     if (useAMI_)
     {
         // Every overlap pair between its two points' own states
@@ -2275,7 +2280,7 @@ void Foam::contactPair::forEachPointPair
         {
             for (const label k : A_.stateFrom[i])
             {
-                pairFn(a[i], b[k]);
+                pairGap(a[i], b[k]);
             }
         }
         return;
@@ -2286,7 +2291,7 @@ void Foam::contactPair::forEachPointPair
     {
         if (partnerData(A_, i, b, partner))
         {
-            pairFn(a[i], partner);
+            pairGap(a[i], partner);
         }
     }
 }
@@ -2295,18 +2300,12 @@ void Foam::contactPair::forEachPointPair
 Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
 {
     const scopeTimer timer(wallTime_);
-    const List<pointData> a(exchangeData(A_));
-    const List<pointData> b(exchangeData(B_));
-
     scalar dt = GREAT;
-    forEachPointPair
+    forEachGap
     (
-        a, b,
-        [&](const pointData& da, const pointData& db)
+        exchangeData(A_), exchangeData(B_),
+        [&](const pointData& da, const scalar gap, const scalar closing)
         {
-            const vector n(gapDirection(pairNormal(da, db)));
-            const scalar gap = (db.x - da.x) & n;
-            const scalar closing = (da.v - db.v) & n;
             if
             (
                 gap > gapTolerance*da.length && closing > 0
@@ -2324,19 +2323,13 @@ Foam::scalar Foam::contactPair::deltaTLimit(const scalar dtFloor) const
 void Foam::contactPair::gapState(bool& closed, scalar& timeToClose) const
 {
     const scopeTimer timer(wallTime_);
-    const List<pointData> a(exchangeData(A_));
-    const List<pointData> b(exchangeData(B_));
-
     closed = false;
     timeToClose = GREAT;
-    forEachPointPair
+    forEachGap
     (
-        a, b,
-        [&](const pointData& da, const pointData& db)
+        exchangeData(A_), exchangeData(B_),
+        [&](const pointData& da, const scalar gap, const scalar closing)
         {
-            const vector n(gapDirection(pairNormal(da, db)));
-            const scalar gap = (db.x - da.x) & n;
-            const scalar closing = (da.v - db.v) & n;
             if (gap <= gapTolerance*da.length)
             {
                 closed = true;

@@ -252,10 +252,7 @@ Foam::scalar Foam::solidBoundaryConditions::rigidWall::strikeSpeed
 ) const
 {
     // Struck once a point touches the wall or reaches it within the
-    // window, and from then on while a point still closes on it (the
-    // anticipated steps are shorter, and so the window: the approach is
-    // not given up for them).  Before the first step (no window) any
-    // approach counts, for that step only
+    // window, and then while one closes on it (approachCounts)
     const pointField& X = dual_.mesh().points();
     bool near = false, closing = false;
     for (const label i : dual_.subFaces(patchi()).point)
@@ -267,8 +264,7 @@ Foam::scalar Foam::solidBoundaryConditions::rigidWall::strikeSpeed
     }
     reduce(near, orOp<bool>());
     reduce(closing, orOp<bool>());
-    approaching_ = (near && window < GREAT) || (approaching_ && closing);
-    if (!near && !approaching_)
+    if (!approachCounts(approaching_, near, closing, window))
     {
         return 0;
     }

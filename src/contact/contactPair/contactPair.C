@@ -1419,7 +1419,6 @@ Foam::contactPair::contactPair
     approaching_(false),
     maxPenetration_(0),
     deltaT_(GREAT),
-    recentDeltaT_(GREAT),
     stage_(0)
 {
     if (dict.found("s"))
@@ -1676,18 +1675,19 @@ void Foam::contactPair::anticipateImpacts
         scalar timeToClose;
         c.gapState(inContact, timeToClose);
         c.stepsClosed_ = inContact ? c.stepsClosed_ + 1 : 0;
-        // Approaching once a gap closes within solidBody::approachSteps of
-        // the pair's recent steps, and from then on while a gap still
-        // closes (the anticipated steps are shorter, and so the window).
-        // Before the pair's first step (no window) any closing gap counts,
-        // for that step only
-        const bool near =
-            inContact
-         || timeToClose <= solidBody::approachSteps*c.recentDeltaT_;
-        c.approaching_ =
-            (near && c.recentDeltaT_ < GREAT)
-         || (c.approaching_ && timeToClose < GREAT);
-        if (!near && !c.approaching_)
+        // Approaching once a gap closes within the approach window, and
+        // then while one closes (solidBoundaryCondition::approachCounts)
+        const scalar window = A.approachWindow();
+        if
+        (
+           !solidBoundaryCondition::approachCounts
+            (
+                c.approaching_,
+                inContact || timeToClose <= window,
+                timeToClose < GREAT,
+                window
+            )
+        )
         {
             // Open and not closing within the next steps: no impact yet
             // (the steps before it are the bodies' own)
@@ -2132,7 +2132,6 @@ void Foam::contactPair::addFluxes()
 void Foam::contactPair::startStep(const scalar dt)
 {
     const scopeTimer timer(wallTime_);
-    recentDeltaT_ = (deltaT_ < GREAT) ? max(dt, deltaT_) : dt;
     deltaT_ = dt;
     stage_ = 0;
 

@@ -2404,28 +2404,31 @@ Foam::boundBox Foam::solidBody::velocityRange() const
 }
 
 
+Foam::scalar Foam::solidBody::approachWindow() const
+{
+    const label index = runTime_.timeIndex();
+    if (index == runTime_.startTimeIndex())
+    {
+        return GREAT;
+    }
+    if (index != strikeIndex_)
+    {
+        const scalar dt = runTime_.deltaTValue();
+        recentDeltaT_ = max(dt, lastDeltaT_);
+        lastDeltaT_ = dt;
+        strikeIndex_ = index;
+    }
+    return approachSteps*recentDeltaT_;
+}
+
+
 Foam::scalar Foam::solidBody::ownStrikeSpeed(const boundBox& v) const
 {
     if (!v.valid())
     {
         return 0;
     }
-    // The window in which a wall's approach counts: approachSteps of the
-    // larger of the last two steps (a step shortened to land on a write
-    // time does not shrink it); any distance before the first step
-    scalar window = GREAT;
-    const label index = runTime_.timeIndex();
-    if (index != runTime_.startTimeIndex())
-    {
-        if (index != strikeIndex_)
-        {
-            const scalar dt = runTime_.deltaTValue();
-            recentDeltaT_ = max(dt, lastDeltaT_);
-            lastDeltaT_ = dt;
-            strikeIndex_ = index;
-        }
-        window = approachSteps*recentDeltaT_;
-    }
+    const scalar window = approachWindow();
     scalar s = mag(v.span());
     const scalar t = runTime_.value();
     for (const solidBoundaryCondition& bc : bcs_)

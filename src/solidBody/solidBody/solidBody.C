@@ -15,6 +15,7 @@
 #include "acousticFormulas.H"
 #include "interiorHugoniot.H"
 #include "greenGauss.H"
+#include "shockFlattening.H"
 #include "vector2D.H"
 #include "unitConversion.H"
 #include "IFstream.H"
@@ -1757,6 +1758,26 @@ void Foam::solidBody::addInteriorFluxes
     // limiter of their own (bodyScheme elasticLimiter)
     const char* __restrict__ elasticPoint =
         elasticLimiter_ ? elasticPoint_.cdata() : nullptr;
+    // The edges a strong shock closes: first-order states, in part or in
+    // full (shockFlattening.H).  (Over every edge also at a multirate
+    // level's stage: a point's coefficient reads its neighbours' states,
+    // which the other levels keep as they were)
+    const scalar* __restrict__ flattening = nullptr;
+    if (scheme_->secondOrder() && scheme_->shockFlattening())
+    {
+        shockFlattening::pointCoefficients
+        (
+            dual_, X, u_, Jstate, q_, flattening_
+        );
+        if (Pstream::parRun())
+        {
+            syncTools::syncPointList
+            (
+                mesh_, flattening_, maxEqOp<scalar>(), scalar(0)
+            );
+        }
+        flattening = flattening_.cdata();
+    }
     fluxState qL, qR;
     auto secondOrderFlux =
     [&]
@@ -1786,6 +1807,14 @@ void Foam::solidBody::addInteriorFluxes
         (
             q_[i], q_[j], G_[i], G_[j], halfdX, qL, qR
         );
+        if (flattening)
+        {
+            const scalar chi = max(flattening[i], flattening[j]);
+            if (chi > 0)
+            {
+                shockFlattening::flatten(chi, q_[i], q_[j], qL, qR);
+            }
+        }
         edgeFlux
         (
             e,

@@ -27,7 +27,14 @@ Description
         wave crosses it, and no other states;
       - vanAlbada on a field with a smooth maximum (a paraboloid): only
         edges near the maximum are limited, by less than the
-        Barth-Jespersen limiter.
+        Barth-Jespersen limiter;
+      - shockFlattening: across a closing jump of J from 1 to 1/2 (a strong
+        shock) every point of a crossing edge takes the coefficient 1 and
+        every other point 0; the same jump opening, and a gentle
+        compression (J changing by less than onsetRatio along any edge),
+        0 everywhere; a steeper compression the ramp's value of its
+        steepest closing edge; flatten moves the midpoint states by the
+        coefficient towards the points' own.
     Exits non-zero if a check fails.
 
     With -dump <file>: the Barth-Jespersen limited gradients of a field that
@@ -47,6 +54,7 @@ Description
 #include "vanAlbada.H"
 #include "superbee.H"
 #include "monotonizedCentral.H"
+#include "shockFlattening.H"
 #include "OFstream.H"
 
 using namespace Foam;
@@ -643,6 +651,137 @@ int main(int argc, char *argv[])
                 << " components of other points changed" << endl;
             nFailed += !ok;
         }
+    }
+
+    // Shock flattening (shockFlattening.H)
+    {
+        const scalar xMin = min(X.component(vector::X));
+        const scalar xMax = max(X.component(vector::X));
+        const scalar x0 = 0.5*(xMin + xMax);
+        const List<vector> u(nPts, Zero);
+        List<fluxState> q(nPts);
+        List<scalar> J(nPts), chi;
+
+        // A closing (opening) jump at x0: the left side moves into (away
+        // from) the right one, J from 1 to 1/2
+        for (const scalar sense : {1.0, -1.0})
+        {
+            forAll(q, i)
+            {
+                q[i] = scalar(0);
+                const bool left = X[i].x() < x0;
+                q[i][0] = left ? sense : 0;
+                J[i] = left ? 1 : 0.5;
+            }
+            shockFlattening::pointCoefficients(dual, X, u, J, q, chi);
+            List<bool> crossing(nPts, false);
+            forAll(es, e)
+            {
+                if ((X[es[e]].x() < x0) != (X[ee[e]].x() < x0))
+                {
+                    crossing[es[e]] = crossing[ee[e]] = true;
+                }
+            }
+            label nWrong = 0, nCrossing = 0;
+            forAll(chi, i)
+            {
+                const scalar expected = (sense > 0 && crossing[i]) ? 1 : 0;
+                nWrong += (chi[i] != expected);
+                nCrossing += crossing[i];
+            }
+            const bool ok = (nWrong == 0 && nCrossing > 0);
+            Info<< (ok ? "PASS" : "FAIL") << " shock flattening across "
+                << (sense > 0 ? "a closing" : "an opening") << " jump of J from 1 "
+                << "to 1/2: " << nWrong << " of " << nPts << " points off "
+                << (sense > 0 ? "1 on a crossing edge, 0 elsewhere" : "0")
+                << " (" << nCrossing << " points on crossing edges)" << endl;
+            nFailed += !ok;
+        }
+
+        // Compressions J = exp(-a (x - xMin)), the velocity closing along
+        // x: the largest ratio over an edge, 1 - J_min/J_max, is 'rise'
+        // (on the edge of the largest x extent); a point's coefficient is
+        // the ramp's value at the largest ratio of its closing edges (the
+        // edges across x, dx = 0, do not close)
+        for (const scalar rise : {0.02, 0.6})
+        {
+            scalar dxMax = 0;
+            forAll(es, e)
+            {
+                dxMax = max(dxMax, mag(X[ee[e]].x() - X[es[e]].x()));
+            }
+            const scalar a = -Foam::log(1 - rise)/dxMax;
+            forAll(q, i)
+            {
+                q[i] = scalar(0);
+                q[i][0] = -(X[i].x() - xMin);
+                J[i] = Foam::exp(-a*(X[i].x() - xMin));
+            }
+            shockFlattening::pointCoefficients(dual, X, u, J, q, chi);
+            List<scalar> expected(nPts, scalar(0));
+            forAll(es, e)
+            {
+                const label i = es[e], j = ee[e];
+                if ((X[j].x() - X[i].x())*(q[j][0] - q[i][0]) >= 0)
+                {
+                    continue;
+                }
+                const scalar r = 1 - min(J[i], J[j])/max(J[i], J[j]);
+                const scalar c = min
+                (
+                    scalar(1),
+                    max
+                    (
+                        scalar(0),
+                        (r - shockFlattening::onsetRatio)
+                       /(shockFlattening::fullRatio
+                       - shockFlattening::onsetRatio)
+                    )
+                );
+                expected[i] = max(expected[i], c);
+                expected[j] = max(expected[j], c);
+            }
+            scalar worst = 0, largest = 0;
+            forAll(chi, i)
+            {
+                worst = max(worst, mag(chi[i] - expected[i]));
+                largest = max(largest, chi[i]);
+            }
+            const bool gentle = rise < shockFlattening::onsetRatio;
+            const bool ok =
+                worst < 1e-14 && (gentle ? largest == 0 : largest > 0);
+            Info<< (ok ? "PASS" : "FAIL") << " shock flattening of a "
+                << (gentle ? "gentle" : "steep") << " compression: largest "
+                << "coefficient " << largest << ", largest difference from "
+                << "the ramp of the steepest closing edge " << worst << endl;
+            nFailed += !ok;
+        }
+
+        // flatten: chi 0 leaves the states, 1 gives the points' own, 1/2
+        // the mean
+        fluxState qi, qj, qL0, qR0;
+        forAll(qi, c)
+        {
+            qi[c] = c;
+            qj[c] = 2*c + 1;
+            qL0[c] = 0.5*c + 3;
+            qR0[c] = -c;
+        }
+        bool ok = true;
+        for (const scalar c : {0.0, 0.5, 1.0})
+        {
+            fluxState qL(qL0), qR(qR0);
+            shockFlattening::flatten(c, qi, qj, qL, qR);
+            forAll(qL, k)
+            {
+                ok = ok
+                 && mag(qL[k] - ((1 - c)*qL0[k] + c*qi[k])) < 1e-14
+                 && mag(qR[k] - ((1 - c)*qR0[k] + c*qj[k])) < 1e-14;
+            }
+        }
+        Info<< (ok ? "PASS" : "FAIL") << " shock flattening of the midpoint "
+            << "states by 0, 1/2 and 1" << endl;
+        nFailed += !ok;
     }
 
     Info<< nl << (nFailed ? "FAILED" : "All checks passed") << endl;

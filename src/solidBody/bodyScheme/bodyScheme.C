@@ -8,6 +8,18 @@
 #include "checkedInput.H"
 #include "FlatOutput.H"
 
+// * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- Why a Hugoniot body with the upwind F flux takes shockFlattening,
+    //  whether the flux was given or chosen from the scene
+    static const char* const shockFlatteningWhy =
+        "Hugoniot shocks with the upwind F flux: the edges a strong shock"
+        " closes take first-order states, so that the struck face does not"
+        " ring";
+}
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 bool Foam::bodyScheme::automatic(const word& key) const
@@ -542,9 +554,7 @@ Foam::bodyScheme::bodyScheme
       ? string("no Hugoniot: on other materials' shocks it is mixed (a"
         " neo-Hookean bar on a wall: better at 0.8 c_p, worse at 0.3 c_p)")
       : FStabilisation_
-      ? string("Hugoniot shocks with the upwind F flux: the edges a strong"
-        " shock closes take first-order states, so that the struck face"
-        " does not ring")
+      ? string(shockFlatteningWhy)
       : string("no plane-wave impact: without the upwind F flux a"
         " first-order shock among second-order edges collapses a struck"
         " corner")
@@ -680,9 +690,7 @@ void Foam::bodyScheme::chooseFromScene
             setChoice
             (
                 "shockFlattening",
-                "yes  (auto: Hugoniot shocks with the upwind F flux: the"
-                " edges a strong shock closes take first-order states, so"
-                " that the struck face does not ring)"
+                string("yes  (auto: ") + shockFlatteningWhy + ")"
             );
         }
         if (limiterFromScene_)

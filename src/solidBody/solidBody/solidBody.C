@@ -14,6 +14,7 @@
 #include "tensorCross.H"
 #include "acousticFormulas.H"
 #include "interiorHugoniot.H"
+#include "hugoniot.H"
 #include "greenGauss.H"
 #include "shockFlattening.H"
 #include "vector2D.H"
@@ -2463,6 +2464,20 @@ Foam::scalar Foam::solidBody::ownStrikeSpeed(const boundBox& v) const
     for (const solidBoundaryCondition& bc : bcs_)
     {
         s = max(s, bc.strikeSpeed(v, u_, q_, t, window));
+        // (a prescribed traction's compressive jump: the velocity jump of
+        // the shock it drives, from the material's Hugoniot)
+        const scalar jump = bc.drivingTractionJump(q_, t);
+        if (jump > 0)
+        {
+            s = max
+            (
+                s,
+               -contactRiemannSolvers::hugoniot::rigidShockJump
+                (
+                    -jump, material_->Zp(), material_->shockMass()
+                )
+            );
+        }
     }
     return s;
 }

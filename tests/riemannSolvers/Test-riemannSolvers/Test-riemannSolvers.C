@@ -353,6 +353,20 @@ int main(int argc, char *argv[])
             tn + Zp*(0 - vn) - hugoniot::rigidShockTerm(0 - vn, mL)
         );
         check("expansive jump: no shock term", hugoniot::rigidShockTerm(5, mL), 0);
+
+        // The inverse (a prescribed traction): a bar pressed by the shocked
+        // stress of 2 c (-600 = -rho0 (c + s v) v at v = 200) takes the
+        // shock's velocity jump, not the acoustic -600/Zp
+        check("traction of 2 c's shock: dv", hugoniot::rigidShockJump(-600, Zp, m), -200);
+        // round trip through the rigid form, at another state
+        const scalar dvT = hugoniot::rigidShockJump(-3.7, 1.3, mL);
+        check
+        (
+            "traction jump -3.7: rho0 c dv - m dv^2",
+            1.3*dvT - hugoniot::rigidShockTerm(dvT, mL), -3.7
+        );
+        check("tensile traction jump: acoustic", hugoniot::rigidShockJump(2.6, 1.3, mL), 2.0);
+        check("no shock mass: acoustic", hugoniot::rigidShockJump(-2.6, 1.3, 0), -2.0);
     }
 
     Info<< "Hugoniot impedance match of a pair's closing speed" << endl;

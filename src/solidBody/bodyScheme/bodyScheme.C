@@ -496,24 +496,31 @@ Foam::bodyScheme::bodyScheme
             wallPatches = wallPatches || type == "rigidWall";
         }
     }
-    const bool tetsWall = wallPatches && !pairPatches;
+    const string balanced
+    (
+        "shear-free: a uniform pressure on the closed dual cells of the"
+        " deformed mesh exerts no force"
+    );
     deformedPressure_ = choose
     (
-        "deformedPressure", deformable && (!triangleBoundary || tetsWall),
+        "deformedPressure",
+        deformable && (!triangleBoundary || (wallPatches && !pairPatches)),
         !deformable
       ? string("shear stiffness or small strain: H N carries the stress")
-      : triangleBoundary && pairPatches
+      : !triangleBoundary
+      ? balanced
+      : pairPatches
       ? string("triangular boundary faces and a contact pair: with it the"
         " pair's contact-face corners on tets collapse")
-      : triangleBoundary && !wallPatches
+      : !wallPatches
       ? string("triangular boundary faces without a rigid wall: H N holds"
         " a driven face's stress closer on tets")
-      : triangleBoundary
-      ? string("shear-free: a uniform pressure on the closed dual cells of"
-        " the deformed mesh exerts no force (on tets at a rigid wall: the"
-        " sliding struck face keeps its stress)")
-      : string("shear-free: a uniform pressure on the closed dual cells of"
-        " the deformed mesh exerts no force")
+      : string
+        (
+            balanced
+          + " (on tets at a rigid wall: the sliding struck face keeps its"
+            " stress)"
+        )
     );
     if (deformedPressure_ && !deformable)
     {

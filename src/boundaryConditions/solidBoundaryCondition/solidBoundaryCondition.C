@@ -8,6 +8,7 @@
 #include "checkedInput.H"
 #include "UIndirectList.H"
 #include "materialModel.H"
+#include "syncTools.H"
 
 namespace Foam
 {
@@ -136,7 +137,7 @@ Foam::scalar Foam::solidBoundaryCondition::solveState
     // too: solidBody::addInteriorFluxes)
     const vector a
     (
-        deformed ? vector(stateDeformedA_[k]/stateMagA_[k]) : vector(Zero)
+        deformed ? vector(stateDeformedA_[k]/stateDeformedMagA_[k]) : vector(Zero)
     );
     if (deformed)
     {
@@ -389,6 +390,11 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
         {
             stateDeformedA_[subFaceState_[s]] += deformed->subFaceArea[s];
         }
+        stateDeformedMagA_ = stateMagA_;
+        if (Pstream::parRun())
+        {
+            syncDeformedAreas();
+        }
     }
 
     // The one-sided Riemann state of every distinct (point, normal) pair
@@ -459,6 +465,60 @@ Foam::scalar Foam::solidBoundaryCondition::addFluxes
 void Foam::solidBoundaryCondition::describe(Ostream& os) const
 {
     os  << dict_.get<word>("type");
+}
+
+
+void Foam::solidBoundaryCondition::syncDeformedAreas() const
+{
+    // A point on a processor cut has sub-faces on both sides: its states'
+    // deformed area per unit reference area is the ratio of the sums over
+    // all of them, the same on every copy (each processor's own share gave
+    // each copy another normal and area ratio: a bar on tets at a wall,
+    // split across its struck face, parted from the serial run by 4e-3).
+    // The states of a point are matched across processors by the nearest
+    // of the point's orthonormalised patch normals
+    const polyMesh& mesh = dual_.mesh();
+    const labelList& bIndex = dual_.boundaryIndex();
+    const List<FixedList<vector, 3>>& bNormals = dual_.boundaryNormals();
+    // (slot m's deformed area in row m of a tensor, its reference area in
+    // component m of a vector: lists syncTools sums as they are)
+    List<tensor> aSums(mesh.nPoints(), Zero);
+    List<vector> magSums(mesh.nPoints(), Zero);
+    labelList slot(statePoint_.size(), 0);
+    forAll(statePoint_, k)
+    {
+        const label i = statePoint_[k];
+        const label b = bIndex[i];
+        if (b >= 0)
+        {
+            scalar best = -1;
+            for (label m = 0; m < 3; ++m)
+            {
+                const scalar c = mag(bNormals[b][m] & stateNormal_[k]);
+                if (c > best)
+                {
+                    best = c;
+                    slot[k] = m;
+                }
+            }
+        }
+        const label m = slot[k];
+        tensor& a = aSums[i];
+        a(m, 0) += stateDeformedA_[k].x();
+        a(m, 1) += stateDeformedA_[k].y();
+        a(m, 2) += stateDeformedA_[k].z();
+        magSums[i][m] += stateMagA_[k];
+    }
+    syncTools::syncPointList(mesh, aSums, plusEqOp<tensor>(), tensor(Zero));
+    syncTools::syncPointList(mesh, magSums, plusEqOp<vector>(), vector(Zero));
+    forAll(statePoint_, k)
+    {
+        const label i = statePoint_[k];
+        const label m = slot[k];
+        stateDeformedA_[k] =
+            vector(aSums[i](m, 0), aSums[i](m, 1), aSums[i](m, 2));
+        stateDeformedMagA_[k] = magSums[i][m];
+    }
 }
 
 

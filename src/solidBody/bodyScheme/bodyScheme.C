@@ -153,7 +153,8 @@ Foam::bodyScheme::bodyScheme
             "secondOrder", "limiter", "relativeNoise", "JLaw", "HLaw",
             "energyStable", "riemannSolver", "FStabilisation",
             "onsetStabilisation", "shockStabilisation", "boundarySlope",
-            "contactRotation", "deformedPressure", "boundaryExtrapolation",
+            "contactRotation", "deformedPressure", "vorticityDamping",
+            "positionalF", "boundaryExtrapolation",
             "elasticLimiter", "shockFlattening"
         }
     );
@@ -467,19 +468,19 @@ Foam::bodyScheme::bodyScheme
     // (two A3 bars at Mach 5 from a 1e-6 seed: 5.6 % of v0 by t = 0.3).
     // On the deformed dual's closed cells a uniform pressure is in
     // equilibrium exactly (doc/method.md, "Pressure on the deformed dual").
-    // On tets the struck face's points also slide sideways, pushed by the
-    // one-sided diagonals as the shock leaves the face, and with H N the
-    // sliding face of a bar on a rigid wall drifts from the exact stress
+    // On tets the end faces' points have half cells of unequal depths
+    // (threefold on structured tets), a struck face's points start apart,
+    // and a shear-free body has nothing that pulls them back into line:
+    // with H N a bar's face on a rigid wall drifts from the exact stress
     // (A3's material on 64 x 2 x 2 tets: 6.5-7 % at 1-2.5 c; 0.1-1.2 % on
-    // the deformed dual).  Elsewhere on tets H N does better: a face driven
-    // by a prescribed velocity (which also holds it from sliding) reads
-    // 1.1 % low at 2 c with H N and 4.3 % with the deformed dual, and a
-    // contact pair of such bodies (both faces sliding) collapsed at a
-    // contact-face corner with the deformed dual when the release arrived
-    // (A3 at Mach 1, frictionless or stick, t = 0.126; it runs with H N,
-    // plateaus within 0.6 %).  So on meshes with triangular boundary faces
-    // only bodies with a rigid wall and without contact pairs take it
-    // (doc/results.md, "Shear-free bodies on tets at a wall")
+    // the deformed dual), and a pair's faces slide sideways (3-4 % of v0)
+    // and stop from 2.5 c.  On the deformed dual with vorticityDamping and
+    // positionalF (below) the A3 pair on 64 tets holds its plateaus within
+    // 0.04-0.5 % at Mach 1-2.5 (H N: 0.6-1.1 %, stops at 2.5); a face
+    // driven by a prescribed velocity (which holds it from sliding) read
+    // 1.1 % low at 2 c with H N and 4.3 % on the deformed dual, so bodies
+    // on tets without a rigid wall or a contact pair keep H N
+    // (doc/results.md, "Why the struck faces of tets go uneven")
     const bool deformable = pressureOnly && !m.smallStrain();
     bool pairPatches = false, wallPatches = false;
     if (solidProperties.isDict("boundaryConditions"))
@@ -504,22 +505,24 @@ Foam::bodyScheme::bodyScheme
     deformedPressure_ = choose
     (
         "deformedPressure",
-        deformable && (!triangleBoundary || (wallPatches && !pairPatches)),
+        deformable && (!triangleBoundary || wallPatches || pairPatches),
         !deformable
       ? string("shear stiffness or small strain: H N carries the stress")
       : !triangleBoundary
       ? balanced
-      : pairPatches
-      ? string("triangular boundary faces and a contact pair: with it the"
-        " pair's contact-face corners on tets collapse")
-      : !wallPatches
-      ? string("triangular boundary faces without a rigid wall: H N holds"
-        " a driven face's stress closer on tets")
+      : !(wallPatches || pairPatches)
+      ? string("triangular boundary faces without a rigid wall or a"
+        " contact pair: H N holds a driven face's stress closer on tets")
       : string
         (
             balanced
-          + " (on tets at a rigid wall: the sliding struck face keeps its"
-            " stress)"
+          + (
+                pairPatches
+              ? " (on tets with vorticityDamping and positionalF: the"
+                " struck faces keep their stress)"
+              : " (on tets at a rigid wall: the sliding struck face keeps"
+                " its stress)"
+            )
         )
     );
     if (deformedPressure_ && !deformable)
@@ -531,6 +534,51 @@ Foam::bodyScheme::bodyScheme
             << (m.smallStrain() ? "small strain" : "shear stiffness")
             << " (its stress is not a pressure times cof F)." << nl
             << "    Valid for this material: no (or auto)"
+            << exit(FatalIOError);
+    }
+
+    // The end faces of tets in a contact pair (above): the shear flow
+    // their uneven half cells start is damped, and F follows the
+    // positions.  Not at a rigid wall, which holds the face's points
+    // level itself: there F from the positions sees the first layer's
+    // tets invert at strong impacts (a bar at 2.5 c stopped at
+    // t = 0.0008; its evolved F runs on, 1.1 % off) and the damping alone
+    // moved the stress further off (1.8 %)
+    const bool tetsPair =
+        deformedPressure_ && triangleBoundary && pairPatches;
+    vorticityDamping_ = choose
+    (
+        "vorticityDamping", tetsPair,
+        tetsPair
+      ? string("shear-free on tets in a contact pair: the struck faces'"
+        " uneven half cells start a shear flow that nothing else resists")
+      : string("no free struck face on uneven boundary cells")
+    );
+    if (vorticityDamping_ && !m.shearFree())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "vorticityDamping yes in " << dict_.name() << " needs a"
+            << " material without shear stiffness (mu 0): this one's shear"
+            << " waves damp its shear flow." << nl
+            << "    Valid for this material: no (or auto)"
+            << exit(FatalIOError);
+    }
+    positionalF_ = choose
+    (
+        "positionalF", tetsPair,
+        tetsPair
+      ? string("on the deformed dual on tets in a contact pair: F from the"
+        " positions stays the deformed dual's map (the conserved F"
+        " sheared at symmetry planes when the release arrived)")
+      : string("F from its own conservation law")
+    );
+    if (positionalF_ && !deformedPressure_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "positionalF yes in " << dict_.name() << " needs"
+            << " deformedPressure (a stress that reads J and the deformed"
+            << " dual only; elsewhere F carries the stress)." << nl
+            << "    Valid: no (or auto), or deformedPressure yes"
             << exit(FatalIOError);
     }
 

@@ -1259,6 +1259,13 @@ namespace
 // non-linear elastic bodies")
 const Foam::scalar shockSensorMach = 0.01;
 
+// vorticityDamping: the rotational tangential jumps' extra impedance, in
+// units of the normal wave's.  The A3 pair on 64 structured tets: with 1
+// it stopped at Mach 3 (t = 0.085, with the pressure on H N), with 2 and 3
+// it ran; on the deformed dual with positionalF, 3 holds Mach 1-2.5 within
+// 0.5 % (doc/results.md, "Why the struck faces of tets go uneven")
+const Foam::scalar vorticityDampingFactor = 3;
+
 // The square of the relative size below which a jump between two points'
 // states is round-off: (1e-12)^2 of their squared magnitudes
 const Foam::scalar roundOffJump2 = 1e-24;
@@ -1424,6 +1431,14 @@ void Foam::solidBody::addInteriorFluxes
     const scalar ZpBody = material_->Zp();
     const scalar shockMass = upwindF || shockF ? material_->shockMass() : 0;
     const bool shearFree = material_->shearFree();
+    // vorticityDamping (bodyScheme): the rotational part of the points'
+    // tangential velocity jumps damped with vorticityDampingFactor times
+    // the normal wave's impedance on top of the interior solver's
+    // tangential impedance (with the gradients: second order, one global
+    // step)
+    const bool vorticityDamping =
+        shearFree && scheme_->vorticityDamping() && scheme_->secondOrder()
+     && !edges;
     // A Hugoniot material's normal impedance at an edge: at least that of
     // the chord of its pressure between the points' volume ratios, which
     // grows with compression (interiorRiemannSolvers::hugoniot::
@@ -1595,6 +1610,45 @@ void Foam::solidBody::addInteriorFluxes
             );
             const vector vP(0.5*(vi + vj));
             vAverage = vP + ((vAverage - vP) & n)*n;
+
+            // The part of the points' velocity jump that their mean
+            // velocity gradient's symmetric part does not explain is
+            // rotational: zero across a plane wave whatever the edge's
+            // direction, the whole jump in a shear flow or a spin.  Its
+            // share w of the tangential jump takes the extra damping
+            // (Z/2 w |[v_t]|^2 >= 0 per unit area: D never falls from it)
+            if (vorticityDamping)
+            {
+                const fluxStateGradient& Gi = G_[i];
+                const fluxStateGradient& Gj = G_[j];
+                const vector d(X[j] - X[i]);
+                tensor L;
+                for (direction c = 0; c < 3; ++c)
+                {
+                    const vector g
+                    (
+                        0.5*(gradientOf(Gi, c) + gradientOf(Gj, c))
+                    );
+                    L(c, 0) = g.x();
+                    L(c, 1) = g.y();
+                    L(c, 2) = g.z();
+                }
+                const vector dv(vj - vi);
+                const vector r(dv - 0.5*((L & d) + (d & L)));
+                const vector dvt(dv - (dv & n)*n);
+                const vector rt(r - (r & n)*n);
+                const scalar dvt2 = magSqr(dvt);
+                if (dvt2 > VSMALL)
+                {
+                    const scalar w = min(1.0, magSqr(rt)/dvt2);
+                    tC +=
+                        (
+                            A*0.5*vorticityDampingFactor*w
+                           *acousticFormulas::compressedFaceFactor(magHN)
+                           *ZpBody
+                        )*dvt;
+                }
+            }
 
             // On the deformed dual a uniform pressure is in equilibrium at
             // every point: its closed cells' area vectors sum to zero,
@@ -2343,6 +2397,60 @@ void Foam::solidBody::applyConstraints(const UList<bool>* active)
         symmetry_->removePlaneRotation(H_, active);
     }
     planeStrain_->apply(dual_.volumes(), lm_, u_, active);
+    // positionalF (bodyScheme): F follows the positions (one global step;
+    // a multirate level stage leaves the others' points as they are)
+    if (scheme_->positionalF() && !active)
+    {
+        deformationFromPositions();
+    }
+}
+
+
+void Foam::solidBody::deformationFromPositions()
+{
+    // F = I + Grad u by Green-Gauss on the reference dual, in the
+    // difference form of the flux states' gradients (exact for linear
+    // fields: the boundary sub-faces with their neighbours' weights)
+    const labelList& es = dual_.edgeStart();
+    const labelList& ee = dual_.edgeEnd();
+    const vectorField& Ne = dual_.edgeNormals();
+    const scalarField& Ae = dual_.edgeMagSf();
+    const scalarField& V = dual_.volumes();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    List<tensor> G(u_.size(), Zero);
+    forAll(es, e)
+    {
+        const label i = es[e], j = ee[e];
+        const tensor f((u_[j] - u_[i])*(0.5*Ae[e]*Ne[e]));
+        G[i] += f;
+        G[j] += f;
+    }
+    forAll(patches, patchi)
+    {
+        const dualMesh::patchSubFaces& sf = dual_.subFaces(patchi);
+        forAll(sf.point, s)
+        {
+            const label i = sf.point[s];
+            G[i] +=
+                (sf.nbrWeight[s]*(u_[sf.prev[s]] + u_[sf.next[s]] - 2*u_[i]))
+               *sf.area[s];
+        }
+    }
+    if (Pstream::parRun())
+    {
+        syncTools::syncPointList
+        (
+            mesh_, G, plusEqOp<tensor>(), tensor(Zero)
+        );
+    }
+    forAll(G, i)
+    {
+        F_[i] = tensor::I + G[i]/V[i];
+        if (scheme_->HLaw())
+        {
+            H_[i] = cofactor(F_[i]);
+        }
+    }
 }
 
 

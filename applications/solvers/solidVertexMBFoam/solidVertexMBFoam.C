@@ -105,6 +105,10 @@ int main(int argc, char *argv[])
     // The step's collapse (checkDeltaT.H)
     const scalar collapseRatio = 1e-3;
     const label collapseSteps = 1000;
+    // (a step below this share of the largest has collapsed at once: one
+    // that falls by orders of magnitude per step would reach steps that no
+    // longer advance the time within collapseSteps)
+    const scalar suddenCollapseRatio = 1e-9;
     scalar largestStep = 0;
     scalar largestStepTime = startTime;
     label nCollapsedSteps = 0;

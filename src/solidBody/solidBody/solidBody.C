@@ -2417,7 +2417,9 @@ void Foam::solidBody::deformationFromPositions()
     const scalarField& Ae = dual_.edgeMagSf();
     const scalarField& V = dual_.volumes();
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
-    List<tensor> G(u_.size(), Zero);
+    List<tensor>& G = positionalGradient_;
+    G.setSize(u_.size());
+    G = Zero;
     forAll(es, e)
     {
         const label i = es[e], j = ee[e];

@@ -234,7 +234,12 @@ int main(int argc, char *argv[])
         {
             bc.writeSummary(Info, b.name());
         }
-        if (b.scheme().contactRotation() && b.contactRotations().anyPoints())
+        // (F from the positions is not turned: solidBody::applyConstraints)
+        if
+        (
+            b.scheme().contactRotation() && !b.scheme().positionalF()
+         && b.contactRotations().anyPoints()
+        )
         {
             Info<< "Body " << b.name() << ": contactRotation turned the F"
                 << " of closed contact points by at most "

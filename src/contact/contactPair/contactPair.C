@@ -1778,22 +1778,22 @@ void Foam::contactPair::chooseRiemannSolver
 {
     const word given(dict_.getOrDefault<word>("riemannSolver", "auto"));
     word type(given);
+    const materialModel& mA = bodyA.material();
+    const materialModel& mB = bodyB.material();
+    // The impact Mach number M = |[[v]]|/c (doc/method.md, section 3)
+    const scalar M =
+        mag(bodyA.initialVelocity() - bodyB.initialVelocity())
+       /min(mA.cp(), mB.cp());
     if (given != "auto")
     {
         riemannChoice_ = "given";
     }
     else
     {
-        // The impact Mach number M = |[[v]]|/c (doc/method.md, section 3):
-        // the Hugoniot contact stress of two like bodies is the acoustic
+        // The Hugoniot contact stress of two like bodies is the acoustic
         // one times (1 + s M/2), so below M = 0.01 the acoustic solver is
         // exact to a fraction of a percent; towards 1 the Hugoniot changes
         // shock speed and separation time substantially
-        const materialModel& mA = bodyA.material();
-        const materialModel& mB = bodyB.material();
-        const scalar M =
-            mag(bodyA.initialVelocity() - bodyB.initialVelocity())
-           /min(mA.cp(), mB.cp());
         OStringStream reason;
         if (!mA.hugoniot() && !mB.hugoniot())
         {
@@ -1828,9 +1828,6 @@ void Foam::contactPair::chooseRiemannSolver
     // pulls the struck points back into line (doc/results.md, "Why the
     // struck faces of tets go uneven").  Said at the start, not only after
     // the failure
-    const scalar M =
-        mag(bodyA.initialVelocity() - bodyB.initialVelocity())
-       /min(bodyA.material().cp(), bodyB.material().cp());
     string bodies;
     bool driven = false;
     for (const solidBody* b : {&bodyA, &bodyB})

@@ -2376,11 +2376,15 @@ void Foam::solidBody::relaxStep(const scalar gamma)
 void Foam::solidBody::applyConstraints(const UList<bool>* active)
 {
     stateChanged();
+    // positionalF (bodyScheme): F follows the positions, set after them
+    // below, so nothing turns it here (one global step; a multirate level
+    // stage would leave the others' points as they are)
+    const bool FFromPositions = scheme_->positionalF() && !active;
     // A closed contact point's normal stays on the deformed surface
     // (contactRotation.H); before the symmetry planes, which then take out
     // any turn about their own axes (bodyScheme: not for small-strain
     // materials, whose energy a rotation changes)
-    if (scheme_->contactRotation())
+    if (scheme_->contactRotation() && !FFromPositions)
     {
         contactRotation_->apply
         (
@@ -2391,15 +2395,16 @@ void Foam::solidBody::applyConstraints(const UList<bool>* active)
     // A point on a symmetry plane stands for its control volume completed
     // by the mirror image, which does not rotate about the plane's axes
     // (symmetryConstraint.H)
-    symmetry_->removePlaneRotation(F_, active);
-    if (scheme_->HLaw())
+    if (!FFromPositions)
     {
-        symmetry_->removePlaneRotation(H_, active);
+        symmetry_->removePlaneRotation(F_, active);
+        if (scheme_->HLaw())
+        {
+            symmetry_->removePlaneRotation(H_, active);
+        }
     }
     planeStrain_->apply(dual_.volumes(), lm_, u_, active);
-    // positionalF (bodyScheme): F follows the positions (one global step;
-    // a multirate level stage leaves the others' points as they are)
-    if (scheme_->positionalF() && !active)
+    if (FFromPositions)
     {
         deformationFromPositions();
     }
